@@ -1,0 +1,113 @@
+// The cloth: particles, structural springs (triangle edges), bend-shear springs and triangles.
+//
+// Layout (data-oriented, index based, no pointer graph):
+//   particles  : parallel arrays x, v, xPrev, invMass (hot) and mass, rest, flags, particleTris (cold)
+//   springs    : Spring {a, b, rest, weight} (hot) + SpringTopo {tri[2], bend} (cold), one per edge
+//   bends      : Spring (hot) + owning edge index (cold), one per interior edge (Onal 3.1.2)
+//   triangles  : Triangle {p[3], s[3], uv[3]} with s[i] the spring joining p[i] and p[(i+1)%3]
+// Tearing appends particles (never removes them, so a particle index is a stable handle) and replaces
+// springs and triangles in place or by swap-and-pop with the few back-references fixed up.
+#pragma once
+#include "clothtear/mesh.h"
+#include "clothtear/types.h"
+
+#include <array>
+#include <vector>
+
+namespace clothtear {
+
+enum ParticleFlags : uint8_t {
+    kPinned = 1u << 0, // never moved by forces, limiting or collisions (may be moved by a driver/tool)
+    kWeak = 1u << 1,   // lies on a torn edge: springs touching it tear at the weak threshold (Onal 3.2.2)
+};
+
+// A spring as the hot loops see it. Per-spring constants come from the material at use:
+//   k  = material stiffness * weight,  kd = material damping * weight,
+//   weight = (rest area of the adjacent triangles) / rest^2   (resolution independence).
+struct Spring {
+    Index a, b;
+    float rest;   // m
+    float weight; // 1 (dimensionless: area / length^2)
+};
+
+struct SpringTopo {
+    Index tri[2] = {kNone, kNone}; // adjacent triangles; tri[1] == kNone on a border or torn edge
+    Index bend = kNone;            // bend-shear spring across this edge, if interior
+};
+
+struct Triangle {
+    Index p[3];        // particles, counter-clockwise in UV space
+    Index s[3];        // s[i] joins p[i] and p[(i+1) % 3]
+    Vec2d uv[3];       // texture coordinates per corner (Onal 3.3)
+    double restArea;   // m^2, from the particles' rest positions
+};
+
+struct Cloth {
+    // ---- particles: hot
+    std::vector<Vec3> x, v, xPrev;
+    std::vector<float> invMass; // 0 for pinned
+    // ---- particles: cold
+    std::vector<double> areaShare;  // m^2: one third of the rest area of each incident triangle
+    std::vector<Vec3d> rest;        // rest-space position (material coordinates)
+    std::vector<uint8_t> flags;     // ParticleFlags
+    std::vector<std::vector<Index>> particleTris; // incident triangles
+    // ---- springs
+    std::vector<Spring> springs;
+    std::vector<SpringTopo> springTopo;
+    std::vector<Spring> bends;
+    std::vector<Index> bendEdge; // structural spring this bend-shear spring crosses
+    // ---- triangles
+    std::vector<Triangle> triangles;
+
+    uint64_t topologyRevision = 0; // bumped on every structural change (renderers re-upload indices)
+    float density = 0.2f;          // kg/m^2 used for mass lumping
+
+    size_t particleCount() const { return x.size(); }
+    double particleMass(Index p) const { return density * areaShare[p]; }
+    bool pinned(Index p) const { return flags[p] & kPinned; }
+    void setPinned(Index p, bool on);
+    void setDensity(float density);
+    void refreshInvMass(Index p);
+
+    double totalMass() const;
+    double totalRestArea() const;
+    double totalUvArea() const;
+};
+
+// Builds the cloth from a mesh: particles at the rest positions, one spring per unique edge, one
+// bend-shear spring per interior edge. Refuses non-manifold edges (3+ triangles) and degenerate
+// triangles with a message.
+Result<Cloth> buildCloth(const MeshData& mesh, float density);
+
+// ---- pure kernels (unit-tested without a world) -------------------------------------------------
+
+// Onal Eq. 1-4: distance between the opposite corners c (of triangle a,b,c) and d (of triangle b,a,d)
+// when both triangles lie flat, from the five rest edge lengths.
+//   alpha = acos((b^2 + c^2 - a^2) / 2bc), theta = alpha + beta, p = sqrt(b^2 + d^2 - 2bd cos theta)
+// Here with the shared edge e=|AB|, and the corner A: |AC| = ac, |BC| = bc, |AD| = ad, |BD| = bd.
+double bendRestLength(double e, double ac, double bc, double ad, double bd);
+
+double triangleArea(const Vec3d& a, const Vec3d& b, const Vec3d& c);
+double uvArea(const Vec2d& a, const Vec2d& b, const Vec2d& c); // signed
+
+// Spring weight (area / rest^2) from the adjacent rest triangle areas.
+float springWeight(double adjacentArea, double restLength);
+
+// Index helpers on the triangle ring.
+inline int cornerOf(const Triangle& t, Index particle) {
+    for (int i = 0; i < 3; ++i)
+        if (t.p[i] == particle) return i;
+    return -1;
+}
+inline int edgeSlotOf(const Triangle& t, Index spring) {
+    for (int i = 0; i < 3; ++i)
+        if (t.s[i] == spring) return i;
+    return -1;
+}
+
+// (Re)creates or removes the bend-shear spring across structural spring `s` so that it exists exactly
+// when the edge is interior. Rest length from the rest geometry (Eq. 1-4).
+void syncBendSpring(Cloth& cloth, Index s);
+void removeBendSpring(Cloth& cloth, Index bendIndex);
+
+} // namespace clothtear

@@ -1,0 +1,35 @@
+// Tearing (Onal 3.2-3.3): basic tear, weak points, one-point connections. The only module that
+// changes cloth topology; it runs between the other phases and emits one TearEvent per tear.
+#pragma once
+#include "clothtear/cloth.h"
+#include "clothtear/settings.h"
+#include "clothtear/tear_events.h"
+
+#include <string>
+#include <vector>
+
+namespace clothtear {
+
+struct TearCandidate {
+    Index spring;  // structural spring index at scan time
+    float strain;  // (len - rest) / rest at scan time
+};
+
+struct TearContext {
+    const TearSettings& settings;
+    double time;
+    TearLog* log;
+};
+
+// Processes candidates most-strained first, up to settings.maxPerStep tears. Candidates are re-checked
+// before each tear (earlier tears move particles and renumber springs). Returns the number of tears.
+int tearSprings(Cloth& cloth, std::vector<TearCandidate>& candidates, const TearContext& ctx);
+
+// Forces one tear of spring s whatever its strain (topology fuzzing, the notch of the tension scene).
+// Picks the mode the strain scan would: weak-point tear when an end is weak, else basic tear.
+bool forceTear(Cloth& cloth, Index spring, const TearContext& ctx);
+
+// Checks every topology invariant (see validate.cpp). Returns "" or the first violation found.
+std::string validateCloth(const Cloth& cloth, double expectedArea = -1, double expectedUvArea = -1);
+
+} // namespace clothtear

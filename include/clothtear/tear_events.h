@@ -1,0 +1,32 @@
+// What tearing reports: one event per tear, kept in a log for the renderer, stats and reports.
+#pragma once
+#include "clothtear/types.h"
+
+#include <array>
+#include <vector>
+
+namespace clothtear {
+
+enum class TearMode : int { Basic = 0, WeakPoint = 1, OnePoint = 2, Count };
+const char* tearModeName(TearMode m);
+
+struct TearEvent {
+    TearMode mode;
+    double time;      // s, simulated
+    Vec3d restPos;    // where, in rest space (m)
+    Vec2d uv;         // where, in texture space
+    float strain;     // strain of the spring that tore
+};
+
+struct TearLog {
+    std::vector<TearEvent> events;
+    std::array<uint64_t, int(TearMode::Count)> counts{};
+    size_t maxEvents = 100000; // older events are kept; beyond this only counts grow
+    void add(const TearEvent& e) {
+        counts[int(e.mode)]++;
+        if (events.size() < maxEvents) events.push_back(e);
+    }
+    uint64_t total() const { return counts[0] + counts[1] + counts[2]; }
+};
+
+} // namespace clothtear

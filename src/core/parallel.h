@@ -1,0 +1,43 @@
+// Tiny helpers over OpenMP: a fixed, deterministic split of [0, n) into one contiguous chunk per
+// thread. Kernels scatter into per-thread buffers, so results never depend on thread timing.
+#pragma once
+#include <cstddef>
+#if CLOTHTEAR_HAVE_OPENMP
+#include <omp.h>
+#endif
+
+namespace clothtear {
+
+inline int maxThreads() {
+#if CLOTHTEAR_HAVE_OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+struct Chunk {
+    size_t begin, end;
+};
+inline Chunk chunkOf(size_t n, int thread, int threads) {
+    const size_t per = (n + threads - 1) / threads;
+    const size_t b = std::min(n, per * thread);
+    return {b, std::min(n, b + per)};
+}
+
+// Runs body(thread, threads) on every thread of a parallel region (or once, serially). Small
+// problems run serially: forking threads costs more than a few thousand items.
+template <class Body> void parallelRegion(size_t work, int threads, Body&& body) {
+#if CLOTHTEAR_HAVE_OPENMP
+    if (threads > 1 && work >= 4096) {
+#pragma omp parallel num_threads(threads)
+        body(omp_get_thread_num(), omp_get_num_threads());
+        return;
+    }
+#endif
+    (void)threads;
+    (void)work;
+    body(0, 1);
+}
+
+} // namespace clothtear

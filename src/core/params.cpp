@@ -1,0 +1,229 @@
+// The parameter table. Each row: name, type, field, safe range, hard range, unit, help.
+#include "clothtear/params.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+namespace clothtear {
+namespace {
+
+const char* const kIntegratorNames[] = {"semi-implicit-euler", "forward-euler", "verlet", nullptr};
+const char* const kAirNames[] = {"drag", "keserica", nullptr};
+const char* const kMeshNames[] = {"grid", "irregular", "obj", nullptr};
+const char* const kPinNames[] = {"none", "top", "corners", "sides", "left", nullptr};
+
+#define CT_F(name, field, smin, smax, hmin, hmax, unit, help, rebuild)                                      \
+    ParamInfo{name, ParamType::Float, offsetof(Settings, field), smin, smax, hmin, hmax, unit, help, nullptr, rebuild}
+#define CT_I(name, field, smin, smax, hmin, hmax, unit, help, rebuild)                                      \
+    ParamInfo{name, ParamType::Int, offsetof(Settings, field), smin, smax, hmin, hmax, unit, help, nullptr, rebuild}
+#define CT_B(name, field, help, rebuild)                                                                    \
+    ParamInfo{name, ParamType::Bool, offsetof(Settings, field), 0, 1, 0, 1, "", help, nullptr, rebuild}
+#define CT_E(name, field, names, help, rebuild)                                                             \
+    ParamInfo{name, ParamType::Enum, offsetof(Settings, field), 0, 0, 0, 0, "", help, names, rebuild}
+
+const ParamInfo kParams[] = {
+    CT_F("time.frame_dt", time.frameDt, 1.0 / 240, 1.0 / 20, 1e-5, 0.1, "s", "Simulated time per frame", false),
+    CT_I("time.substeps", time.substeps, 1, 200, 1, 2000, "", "Sub-steps per frame (sub-step dt = frame_dt / substeps)", false),
+    CT_E("time.integrator", time.integrator, kIntegratorNames, "Integration method", false),
+    CT_F("time.verlet_friction", time.verletFriction, 0, 0.2, 0, 1, "", "Verlet: fraction of velocity lost per step (Keserica f)", false),
+
+    CT_F("material.density", material.density, 0.01, 5, 1e-4, 100, "kg/m^2", "Areal density, lumped to particles from rest triangle areas", false),
+    CT_F("material.stretch_stiffness", material.stretchStiffness, 0, 200, 0, 1e6, "N/m", "Membrane stretch stiffness; per spring k = value * area / length^2", false),
+    CT_F("material.stretch_damping", material.stretchDamping, 0, 2, 0, 1e4, "N s/m", "Damping along structural springs, same scaling", false),
+    CT_F("material.bend_stiffness", material.bendStiffness, 0, 50, 0, 1e6, "N/m", "Bend-shear spring stiffness (Onal 3.1.2)", false),
+    CT_F("material.bend_damping", material.bendDamping, 0, 0.5, 0, 1e4, "N s/m", "Bend-shear spring damping", false),
+
+    CT_E("air.model", air.model, kAirNames, "Air friction: physical drag, or Keserica's fixed fraction per step", false),
+    CT_F("air.drag", air.dragCoefficient, 0, 5, 0, 1000, "kg/(m^2 s)", "Linear air drag per unit area: F = -c A v", false),
+    CT_F("air.keserica_factor", air.kesericaFactor, 0, 0.5, 0, 1, "", "Keserica model: fraction of velocity removed per sub-step", false),
+
+    CT_F("gravity.x", gravity.x, -30, 30, -1000, 1000, "m/s^2", "Gravity, x component", false),
+    CT_F("gravity.y", gravity.y, -30, 30, -1000, 1000, "m/s^2", "Gravity, y component (up is +y)", false),
+    CT_F("gravity.z", gravity.z, -30, 30, -1000, 1000, "m/s^2", "Gravity, z component", false),
+
+    CT_B("limit.enabled", limit.enabled, "Provot length limiting after each sub-step", false),
+    CT_F("limit.max_stretch", limit.maxStretch, 0.01, 0.5, 0.001, 10, "", "Springs longer than rest*(1+value) are pulled back", false),
+    CT_I("limit.iterations", limit.iterations, 0, 50, 0, 1000, "", "Jacobi passes of the length limit per sub-step", false),
+    CT_F("limit.relaxation", limit.relaxation, 0.5, 1.8, 0.1, 2, "", "Over-relaxation of the averaged correction", false),
+
+    CT_B("wind.enabled", wind.enabled, "Wind force on triangles", false),
+    CT_F("wind.dir_x", wind.dirX, -1, 1, -1, 1, "", "Wind direction, x", false),
+    CT_F("wind.dir_y", wind.dirY, -1, 1, -1, 1, "", "Wind direction, y", false),
+    CT_F("wind.dir_z", wind.dirZ, -1, 1, -1, 1, "", "Wind direction, z", false),
+    CT_F("wind.speed", wind.speed, 0, 30, 0, 1000, "m/s", "Mean wind speed", false),
+    CT_F("wind.gust", wind.gust, 0, 1, 0, 10, "", "Gust amplitude relative to speed", false),
+    CT_F("wind.gust_frequency", wind.gustFrequency, 0, 5, 0, 100, "Hz", "Gust frequency", false),
+    CT_F("wind.drag", wind.dragCoefficient, 0, 5, 0, 1000, "kg/m^3", "Pressure coefficient: F = c A (n.v)|n.v| n", false),
+
+    CT_B("collision.ground", collision.ground, "Ground plane", false),
+    CT_F("collision.ground_height", collision.groundHeight, -20, 20, -1000, 1000, "m", "Height of the ground plane", false),
+    CT_F("collision.friction", collision.friction, 0, 1, 0, 10, "", "Coulomb friction between cloth and colliders", false),
+    CT_F("collision.thickness", collision.thickness, 0, 0.05, 0, 1, "m", "Gap kept between cloth and colliders", false),
+
+    CT_B("tear.enabled", tear.enabled, "Tearing (strain scan and topology changes)", false),
+    CT_F("tear.threshold", tear.threshold, 0.05, 3, 0.001, 100, "", "Strain at which a spring tears (basic tear)", false),
+    CT_F("tear.weak_threshold", tear.weakThreshold, 0.02, 3, 0.001, 100, "", "Strain at which a spring touching a weak point tears", false),
+    CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
+    CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
+    CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
+
+    CT_E("cloth.mesh", cloth.mesh, kMeshNames, "Mesh type", true),
+    CT_I("cloth.resolution_x", cloth.resolutionX, 2, 256, 2, 2048, "", "Particles across", true),
+    CT_I("cloth.resolution_y", cloth.resolutionY, 2, 256, 2, 2048, "", "Particles down", true),
+    CT_F("cloth.width", cloth.width, 0.1, 20, 0.01, 1000, "m", "Cloth width", true),
+    CT_F("cloth.height", cloth.height, 0.1, 20, 0.01, 1000, "m", "Cloth height", true),
+    CT_F("cloth.jitter", cloth.jitter, 0, 0.4, 0, 0.45, "", "Irregular mesh: vertex jitter as a fraction of spacing", true),
+    CT_I("cloth.seed", cloth.seed, 0, 1000000, 0, 2147483647, "", "Irregular mesh: random seed", true),
+    CT_E("cloth.pin", cloth.pin, kPinNames, "Which particles are pinned", true),
+    CT_F("cloth.tilt", cloth.tilt, -90, 90, -90, 90, "deg", "Rotation about the top edge (90 = horizontal)", true),
+
+    CT_F("pull.angle", scene.pullAngle, -180, 180, -360, 360, "deg", "Pull scene: direction in the cloth plane, 0 = down", true),
+    CT_F("pull.speed", scene.pullSpeed, 0, 5, 0, 100, "m/s", "Pull scene: speed of the grabbed particle", true),
+    CT_F("tension.speed", scene.tensionSpeed, 0, 2, 0, 100, "m/s", "Tension scene: speed of each clamp", true),
+    CT_B("tension.notch", scene.tensionNotch, "Tension scene: cut a short slit in the middle", true),
+    CT_F("ball.radius", scene.ballRadius, 0.05, 5, 0.001, 100, "m", "Radius of thrown balls", false),
+    CT_F("ball.speed", scene.ballSpeed, 0, 30, 0, 1000, "m/s", "Speed of thrown balls", false),
+    CT_F("ball.mass", scene.ballMass, 0.05, 100, 1e-4, 1e5, "kg", "Mass of thrown balls", false),
+    CT_F("ball.height", scene.ballHeight, 0, 1, 0, 1, "", "Ball scenes: aim height as a fraction of the cloth height", true),
+};
+
+#undef CT_F
+#undef CT_I
+#undef CT_B
+#undef CT_E
+
+template <class T> T& field(Settings& s, const ParamInfo& p) {
+    return *reinterpret_cast<T*>(reinterpret_cast<char*>(&s) + p.offset);
+}
+template <class T> const T& field(const Settings& s, const ParamInfo& p) {
+    return *reinterpret_cast<const T*>(reinterpret_cast<const char*>(&s) + p.offset);
+}
+
+int enumCount(const ParamInfo& p) {
+    int n = 0;
+    while (p.enumNames[n]) ++n;
+    return n;
+}
+
+std::string trim(std::string_view v) {
+    while (!v.empty() && (v.front() == ' ' || v.front() == '\t')) v.remove_prefix(1);
+    while (!v.empty() && (v.back() == ' ' || v.back() == '\t' || v.back() == '\r' || v.back() == '\n')) v.remove_suffix(1);
+    return std::string(v);
+}
+
+std::string fmtDouble(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+} // namespace
+
+std::span<const ParamInfo> allParams() { return kParams; }
+
+const ParamInfo* findParam(std::string_view name) {
+    for (const ParamInfo& p : kParams)
+        if (name == p.name) return &p;
+    return nullptr;
+}
+
+double getParam(const Settings& s, const ParamInfo& p) {
+    switch (p.type) {
+    case ParamType::Float: return field<float>(s, p);
+    case ParamType::Int: return field<int32_t>(s, p);
+    case ParamType::Bool: return field<bool>(s, p) ? 1.0 : 0.0;
+    case ParamType::Enum: return field<int32_t>(s, p);
+    }
+    return 0;
+}
+
+void setParamUnchecked(Settings& s, const ParamInfo& p, double value) {
+    switch (p.type) {
+    case ParamType::Float: field<float>(s, p) = static_cast<float>(value); break;
+    case ParamType::Int: field<int32_t>(s, p) = static_cast<int32_t>(std::lround(value)); break;
+    case ParamType::Bool: field<bool>(s, p) = value != 0.0; break;
+    case ParamType::Enum: field<int32_t>(s, p) = static_cast<int32_t>(std::lround(value)); break;
+    }
+}
+
+std::string setParamFromString(Settings& s, std::string_view name, std::string_view rawValue) {
+    const ParamInfo* p = findParam(name);
+    if (!p) return "unknown parameter '" + std::string(name) + "' (see --help-params for the list)";
+    const std::string value = trim(rawValue);
+    if (value.empty()) return "parameter '" + std::string(name) + "': empty value";
+    if (p->type == ParamType::Bool) {
+        if (value == "1" || value == "true" || value == "on" || value == "yes") field<bool>(s, *p) = true;
+        else if (value == "0" || value == "false" || value == "off" || value == "no") field<bool>(s, *p) = false;
+        else return "parameter '" + std::string(name) + "': '" + value + "' is not a boolean (use true/false, on/off, 1/0)";
+        return {};
+    }
+    if (p->type == ParamType::Enum) {
+        const int n = enumCount(*p);
+        for (int i = 0; i < n; ++i)
+            if (value == p->enumNames[i]) {
+                field<int32_t>(s, *p) = i;
+                return {};
+            }
+        int index = -1;
+        auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), index);
+        if (ec == std::errc() && ptr == value.data() + value.size() && index >= 0 && index < n) {
+            field<int32_t>(s, *p) = index;
+            return {};
+        }
+        std::string options;
+        for (int i = 0; i < n; ++i) options += std::string(i ? ", " : "") + p->enumNames[i];
+        return "parameter '" + std::string(name) + "': '" + value + "' is not one of: " + options;
+    }
+    double parsed = 0;
+    auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), parsed);
+    if (ec != std::errc() || ptr != value.data() + value.size() || !std::isfinite(parsed))
+        return "parameter '" + std::string(name) + "': '" + value + "' is not a number";
+    if (p->type == ParamType::Int && parsed != std::floor(parsed))
+        return "parameter '" + std::string(name) + "': '" + value + "' is not an integer";
+    if (parsed < p->hardMin || parsed > p->hardMax)
+        return "parameter '" + std::string(name) + "': " + value + " is outside the valid range [" +
+               fmtDouble(p->hardMin) + ", " + fmtDouble(p->hardMax) + "]" + (p->unit[0] ? std::string(" ") + p->unit : "");
+    setParamUnchecked(s, *p, parsed);
+    return {};
+}
+
+std::string applyAssignment(Settings& s, std::string_view assignment) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string_view::npos)
+        return "malformed assignment '" + std::string(assignment) + "' (expected key=value)";
+    return setParamFromString(s, trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+}
+
+std::string formatParamValue(const Settings& s, const ParamInfo& p) {
+    switch (p.type) {
+    case ParamType::Bool: return field<bool>(s, p) ? "true" : "false";
+    case ParamType::Enum: {
+        const int i = field<int32_t>(s, p);
+        return (i >= 0 && i < enumCount(p)) ? p.enumNames[i] : std::to_string(i);
+    }
+    default: return fmtDouble(getParam(s, p));
+    }
+}
+
+std::string paramsMarkdown() {
+    const Settings defaults;
+    std::ostringstream o;
+    o << "| name | default | unit | safe range | valid range | rebuilds | description |\n";
+    o << "|---|---|---|---|---|---|---|\n";
+    for (const ParamInfo& p : kParams) {
+        o << "| `" << p.name << "` | " << formatParamValue(defaults, p) << " | " << p.unit << " | ";
+        if (p.type == ParamType::Float || p.type == ParamType::Int)
+            o << "[" << p.safeMin << ", " << p.safeMax << "] | [" << p.hardMin << ", " << p.hardMax << "]";
+        else if (p.type == ParamType::Enum) {
+            for (int i = 0; p.enumNames[i]; ++i) o << (i ? ", " : "") << p.enumNames[i];
+            o << " | same";
+        } else
+            o << "true/false | same";
+        o << " | " << (p.rebuildsCloth ? "yes" : "") << " | " << p.help << " |\n";
+    }
+    return o.str();
+}
+
+} // namespace clothtear
