@@ -18,7 +18,8 @@ namespace clothtear {
 
 enum ParticleFlags : uint8_t {
     kPinned = 1u << 0, // never moved by forces, limiting or collisions (may be moved by a driver/tool)
-    kWeak = 1u << 1,   // lies on a torn edge: springs touching it tear at the weak threshold (Onal 3.2.2)
+    kWeak = 1u << 1,   // tip of a tear: springs touching it tear at the weak threshold (Onal 3.2.2)
+    kHinge = 1u << 2,  // one-point connection: two parts of the cloth meet only here (Onal 3.2.3)
 };
 
 // A spring as the hot loops see it. Per-spring constants come from the material at use:

@@ -16,6 +16,7 @@ struct TimeSettings {
     int32_t substeps = 10;        // count, [1, 500]  sub-steps per frame (sub-step dt = frameDt / substeps)
     Integrator integrator = Integrator::SemiImplicitEuler;
     float verletFriction = 0.01f; // fraction of velocity lost per Verlet step (Keserica 2.2.1 "f"), [0, 1]
+    bool stabilityGuard = true;   // cap each spring's stiffness/damping to its explicit stability limit
 };
 
 struct MaterialSettings {

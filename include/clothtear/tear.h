@@ -19,6 +19,9 @@ struct TearContext {
     const TearSettings& settings;
     double time;
     TearLog* log;
+    // Out: (original, copy) for every particle duplicated by a weak-point or one-point tear, so the
+    // caller can let copies follow what held the original (drivers, tools). May be null.
+    std::vector<std::pair<Index, Index>>* copies = nullptr;
 };
 
 // Processes candidates most-strained first, up to settings.maxPerStep tears. Candidates are re-checked

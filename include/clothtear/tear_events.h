@@ -3,6 +3,7 @@
 #include "clothtear/types.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace clothtear {
@@ -22,6 +23,7 @@ struct TearLog {
     std::vector<TearEvent> events;
     std::array<uint64_t, int(TearMode::Count)> counts{};
     size_t maxEvents = 100000; // older events are kept; beyond this only counts grow
+    std::string validationError; // first invariant violation found after a tear (when validating)
     void add(const TearEvent& e) {
         counts[int(e.mode)]++;
         if (events.size() < maxEvents) events.push_back(e);

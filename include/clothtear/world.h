@@ -88,7 +88,7 @@ public:
 private:
     StepScratch scratch_;
     void phaseForces(float dt);
-    void phaseSprings();
+    void phaseSprings(float dt);
     void phaseWind();
     void phaseIntegrate(float dt);
     void phaseLimit(float dt);

@@ -27,6 +27,7 @@ const ParamInfo kParams[] = {
     CT_F("time.frame_dt", time.frameDt, 1.0 / 240, 1.0 / 20, 1e-5, 0.1, "s", "Simulated time per frame", false),
     CT_I("time.substeps", time.substeps, 1, 200, 1, 2000, "", "Sub-steps per frame (sub-step dt = frame_dt / substeps)", false),
     CT_E("time.integrator", time.integrator, kIntegratorNames, "Integration method", false),
+    CT_B("time.stability_guard", time.stabilityGuard, "Cap each spring's stiffness and damping to what explicit integration can take (off: unsafe on purpose)", false),
     CT_F("time.verlet_friction", time.verletFriction, 0, 0.2, 0, 1, "", "Verlet: fraction of velocity lost per step (Keserica f)", false),
 
     CT_F("material.density", material.density, 0.01, 5, 1e-4, 100, "kg/m^2", "Areal density, lumped to particles from rest triangle areas", false),

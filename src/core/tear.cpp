@@ -1,5 +1,21 @@
-// Tearing: placeholder until the tearing issue lands (candidates are found by the strain scan).
+// Tearing (Onal 3.2-3.3): basic tear, weak points, one-point connections.
+//
+// Section index:
+//   [BASIC]     split both neighbour triangles at the spring's midpoint (3.2.1)
+//   [WEAK]      continue a tear through its tip along the thesis heuristic (3.2.2)
+//   [ONEPOINT]  separate parts that hang together through one particle (3.2.3)
+//   [DRIVER]    candidate ordering, thresholds, cap, events, validation
+//
+// Texture integrity (3.3): UVs live on triangle corners. Split triangles take the parents' corner UVs
+// and the UV midpoint of the torn edge; re-attached triangles keep theirs. Rest areas of split
+// triangles are exactly half of the parent's, so the total rest area and the mass (density x area,
+// lumped from triangles) never change.
 #include "clothtear/tear.h"
+
+#include "tear_topology.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace clothtear {
 
@@ -8,7 +24,307 @@ const char* tearModeName(TearMode m) {
     return names[int(m)];
 }
 
-int tearSprings(Cloth&, std::vector<TearCandidate>&, const TearContext&) { return 0; }
-bool forceTear(Cloth&, Index, const TearContext&) { return false; }
+namespace {
+
+float strainOf(const Cloth& c, Index s) {
+    const Spring& sp = c.springs[s];
+    return (c.x[sp.b] - c.x[sp.a]).norm() / sp.rest - 1.f;
+}
+
+// After a tear the particle that still holds the tense spring is moved towards the spring's other
+// end, so the spring is not torn again at once (Onal Fig. 3.9 for the basic tear, Fig. 3.19 for a
+// one-point connection): its length drops to at most rest * (1 + target), moving at most half the
+// excess. Pinned particles stay.
+void relieve(Cloth& c, Index holder, Index spring, float target) {
+    if (c.pinned(holder)) return;
+    const Spring& sp = c.springs[spring];
+    const Index other = otherEnd(sp, holder);
+    const Vec3 d = c.x[other] - c.x[holder];
+    const float len = d.norm();
+    const float excess = len - sp.rest * (1.f + target);
+    if (!(excess > 0.f) || !(len > 0.f)) return;
+    const Vec3 move = d * (0.5f * excess / len);
+    c.x[holder] += move;
+    c.xPrev[holder] += move;
+}
+
+// ================================================================================================ [BASIC]
+//
+// Spring s = (a, b) with triangles T1 = (a, b, c) and, unless s is on a border, T2 = (b, a, d).
+// Each triangle is split at the midpoint m; a gets its own copy ma, b gets mb:
+//
+//          c                          c
+//         / .                        /|.
+//        /   .                      / | .         T1a = (a, ma, c)   T1b = (mb, b, c)
+//       /     .          ->        /  |  .        T2a = (ma, a, d)   T2b = (b, mb, d)
+//      a-------b                  a--ma mb--b     a-ma and mb-b: the two halves of s, shared
+//       .     /                    .  |  /        by the triangles on the same side; the
+//        .   /                      . | /         dividers c-ma, c-mb, d-ma, d-mb are separate
+//         . /                        .|/          springs, so the two sides move independently.
+//          d                          d
+//
+// The cut runs c - m - d; c and d become tips of the tear (weak points).
+bool basicTear(Cloth& c, Index s, float strain, const TearContext& ctx) {
+    const Spring sp = c.springs[s];
+    const SpringTopo topo = c.springTopo[s];
+    const Index a = sp.a, b = sp.b;
+    // Never create a degenerate rest triangle: refuse to halve edges that are already tiny.
+    double scale = 0;
+    for (Index t : topo.tri)
+        if (t != kNone) scale = std::max(scale, c.triangles[t].restArea);
+    if (!(sp.rest > 1e-6f) || !(scale > 1e-14)) return false;
+
+    if (topo.bend != kNone) removeBendSpring(c, topo.bend);
+    const Vec3d restM = 0.5 * (c.rest[a] + c.rest[b]);
+    const Index ma = appendParticleCopy(c, a), mb = appendParticleCopy(c, b);
+    c.rest[ma] = c.rest[mb] = restM;
+    c.flags[ma] = c.flags[mb] = 0; // new midpoints are never pinned
+    // Fig. 3.9: place the new ends so that each half is at most slightly stretched.
+    const Vec3 d = c.x[b] - c.x[a];
+    const float len = d.norm();
+    const float half = std::min(0.5f * len, 0.5f * sp.rest * (1.f + 0.5f * ctx.settings.weakThreshold));
+    const Vec3 dir = len > 0.f ? Vec3(d / len) : Vec3::Zero();
+    c.x[ma] = c.x[a] + dir * half;
+    c.x[mb] = c.x[b] - dir * half;
+    c.xPrev[ma] = c.x[ma] - (c.x[a] - c.xPrev[a]);
+    c.xPrev[mb] = c.x[mb] - (c.x[b] - c.xPrev[b]);
+    // v of the copies = v of their side: momentum is conserved because ma takes exactly the mass a
+    // loses (one sixth of each split triangle), likewise mb from b.
+
+    // Reuse s as the half a-ma; append the half mb-b.
+    c.springs[s] = Spring{a, ma, 0.5f * sp.rest, 0.f};
+    c.springTopo[s] = SpringTopo{};
+    const Index hb = appendSpring(c, mb, b, 0.5 * sp.rest);
+    std::vector<Index> touched;
+    for (Index t : topo.tri) {
+        if (t == kNone) continue;
+        const Triangle T = c.triangles[t];
+        const int i = edgeSlotOf(T, s);
+        const Index P = T.p[i], Q = T.p[(i + 1) % 3], C = T.p[(i + 2) % 3];
+        const Index sQC = T.s[(i + 1) % 3], sCP = T.s[(i + 2) % 3];
+        const Vec2d uvM = 0.5 * (T.uv[i] + T.uv[(i + 1) % 3]);
+        const bool pIsA = (P == a);
+        const Index mP = pIsA ? ma : mb, mQ = pIsA ? mb : ma;
+        const Index hP = pIsA ? s : hb, hQ = pIsA ? hb : s;
+        const Index dP = appendSpring(c, mP, C, (c.rest[C] - restM).norm());
+        const Index dQ = appendSpring(c, mQ, C, (c.rest[C] - restM).norm());
+        const Index tq = Index(c.triangles.size());
+        // P-side half stays in slot t, Q-side half is appended.
+        c.triangles[t] = Triangle{{P, mP, C}, {hP, dP, sCP}, {T.uv[i], uvM, T.uv[(i + 2) % 3]}, 0.5 * T.restArea};
+        c.triangles.push_back(
+            Triangle{{mQ, Q, C}, {hQ, sQC, dQ}, {uvM, T.uv[(i + 1) % 3], T.uv[(i + 2) % 3]}, 0.5 * T.restArea});
+        topoAddTriangle(c.springTopo[hP], t);
+        topoAddTriangle(c.springTopo[hQ], tq);
+        topoAddTriangle(c.springTopo[dP], t);
+        topoAddTriangle(c.springTopo[dQ], tq);
+        topoReplaceTriangle(c.springTopo[sQC], t, tq);
+        replaceIn(c.particleTris[Q], t, tq);
+        c.particleTris[C].push_back(tq);
+        c.particleTris[mP].push_back(t);
+        c.particleTris[mQ].push_back(tq);
+        touched.push_back(t);
+        touched.push_back(tq);
+    }
+    refreshAround(c, touched);
+    if (ctx.log) {
+        const Triangle& t0 = c.triangles[touched[0]];
+        ctx.log->add(TearEvent{TearMode::Basic, ctx.time, restM, t0.uv[1], strain});
+    }
+    return true;
+}
+
+// Moves the triangles `group` of particle p's fan onto a new copy of p. Spokes that belong only to
+// those triangles move with them; `sharedSpoke` (if any) is a spoke between the group and the rest of
+// the fan: it stays with the rest and the group gets its own copy of it. Returns the copy.
+Index detachGroup(Cloth& c, Index p, const std::vector<Index>& group, Index sharedSpoke, std::vector<Index>& touched) {
+    const Index q = appendParticleCopy(c, p);
+    if (sharedSpoke != kNone) {
+        const Spring old = c.springs[sharedSpoke];
+        const Index far = otherEnd(old, p);
+        const Index copy = appendSpring(c, q, far, old.rest);
+        for (Index t : group) {
+            Triangle& T = c.triangles[t];
+            const int slot = edgeSlotOf(T, sharedSpoke);
+            if (slot < 0) continue;
+            T.s[slot] = copy;
+            topoRemoveTriangle(c.springTopo[sharedSpoke], t);
+            topoAddTriangle(c.springTopo[copy], t);
+        }
+    }
+    for (Index t : group) {
+        Triangle& T = c.triangles[t];
+        const int corner = cornerOf(T, p);
+        T.p[corner] = q;
+        // The two springs of T at this corner now start at q (unless already moved or the copy).
+        for (Index s : {T.s[corner], T.s[(corner + 2) % 3]}) {
+            Spring& sp = c.springs[s];
+            if (sp.a == p) sp.a = q;
+            else if (sp.b == p) sp.b = q;
+        }
+        eraseFrom(c.particleTris[p], t);
+        c.particleTris[q].push_back(t);
+        touched.push_back(t);
+    }
+    if (c.pinned(p)) c.setPinned(q, true);
+    return q;
+}
+
+void addFanTriangles(const Cloth& c, Index p, std::vector<Index>& touched) {
+    for (Index t : c.particleTris[p]) touched.push_back(t);
+}
+
+Vec2d uvAtParticle(const Cloth& c, Index p) {
+    const Triangle& t = c.triangles[c.particleTris[p].front()];
+    return t.uv[cornerOf(t, p)];
+}
+
+// ================================================================================================= [WEAK]
+//
+// p is the tip of a tear and spring sT = (p, r) is over the weak threshold. The tear continues
+// through p along one of p's other springs (Onal 3.2.2, Fig. 3.13-3.15):
+//   1. tension axis t = (x_r - x_p) / |x_r - x_p|;
+//   2. the spring that resists most: largest projection of its force on -t;
+//   3. the candidates are the springs between sT and that spring on the side where the two are
+//      connected through triangles (the other side contains the existing tear);
+//   4. among them, the one with the smallest angle to the axis perpendicular to t.
+// The triangles on the far side of the chosen spring are re-attached to a new copy of p.
+bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx) {
+    const std::vector<Fan> fans = fansAround(c, p);
+    if (fans.size() != 1 || fans[0].closed) return false;
+    const Fan& fan = fans[0];
+    const int k = int(fan.tris.size());
+    const auto it = std::find(fan.spokes.begin(), fan.spokes.end(), sT);
+    if (it == fan.spokes.end()) return false;
+    const int iT = int(it - fan.spokes.begin());
+    const Index r = otherEnd(c.springs[sT], p);
+    Vec3 t = c.x[r] - c.x[p];
+    if (!(t.norm() > 0.f)) return false;
+    t.normalize();
+
+    int iRes = -1;
+    float best = -1e30f;
+    for (int j = 0; j <= k; ++j) {
+        if (j == iT) continue;
+        const Spring& sp = c.springs[fan.spokes[j]];
+        Vec3 u = c.x[otherEnd(sp, p)] - c.x[p];
+        const float len = u.norm();
+        if (!(len > 0.f)) continue;
+        u /= len;
+        // Force on p of spring j (stiffness weight x extension, along u); a slack spring still
+        // counts by direction with a tiny weight so that a choice always exists.
+        const float force = sp.weight * std::max(len - sp.rest, 0.f) + 1e-6f * sp.rest;
+        const float resistance = force * u.dot(-t);
+        if (resistance > best) best = resistance, iRes = j;
+    }
+    if (iRes < 0) return false;
+    const int lo = std::min(iT, iRes), hi = std::max(iT, iRes);
+    int iC = -1;
+    float bestCos = 2.f;
+    for (int j = lo + 1; j < hi; ++j) {
+        const Spring& sp = c.springs[fan.spokes[j]];
+        const Vec3 u = (c.x[otherEnd(sp, p)] - c.x[p]).normalized();
+        const float cosToTension = std::abs(u.dot(t)); // small = close to the perpendicular axis
+        if (cosToTension < bestCos) bestCos = cosToTension, iC = j;
+    }
+    if (iC < 0) return false;
+
+    const Index cut = fan.spokes[iC];
+    const Index farEnd = otherEnd(c.springs[cut], p);
+    // Triangles after the cut spoke go to the copy; the cut spoke stays with the triangles before it.
+    const std::vector<Index> group(fan.tris.begin() + iC, fan.tris.end());
+    std::vector<Index> touched;
+    const Index q = detachGroup(c, p, group, cut, touched);
+    addFanTriangles(c, p, touched);
+    addFanTriangles(c, farEnd, touched);
+    const Index holder = iT >= iC ? q : p;
+    refreshAround(c, touched);
+    relieve(c, holder, sT, 0.5f * ctx.settings.weakThreshold);
+    if (ctx.copies) ctx.copies->emplace_back(p, q);
+    if (ctx.log) ctx.log->add(TearEvent{TearMode::WeakPoint, ctx.time, c.rest[p], uvAtParticle(c, p), strain});
+    return true;
+}
+
+// ============================================================================================= [ONEPOINT]
+//
+// p joins two or more fans (a tear reached the border, or two tears met): every fan but the first
+// gets its own copy of p, and the one holding the tense spring is moved slightly along the tension.
+bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx) {
+    const std::vector<Fan> fans = fansAround(c, p);
+    if (fans.size() < 2) return false;
+    std::vector<Index> touched;
+    addFanTriangles(c, p, touched);
+    Index holder = p;
+    for (size_t f = 1; f < fans.size(); ++f) {
+        const bool holds = std::find(fans[f].spokes.begin(), fans[f].spokes.end(), sT) != fans[f].spokes.end();
+        const Index q = detachGroup(c, p, fans[f].tris, kNone, touched);
+        if (holds) holder = q;
+        if (ctx.copies) ctx.copies->emplace_back(p, q);
+    }
+    refreshAround(c, touched);
+    relieve(c, holder, sT, 0.5f * ctx.settings.onePointThreshold);
+    if (ctx.log) ctx.log->add(TearEvent{TearMode::OnePoint, ctx.time, c.rest[p], uvAtParticle(c, p), strain});
+    return true;
+}
+
+// =============================================================================================== [DRIVER]
+
+// Tears spring s if its strain calls for it, choosing the mode from its ends. `force` skips the
+// thresholds (topology fuzzing, pre-cut notches).
+bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force) {
+    const TearSettings& T = ctx.settings;
+    const float strain = strainOf(c, s);
+    const Index a = c.springs[s].a, b = c.springs[s].b;
+    for (Index p : {a, b})
+        if ((c.flags[p] & kHinge) && (force || strain >= T.onePointThreshold) && onePointSplit(c, p, s, strain, ctx))
+            return true;
+    for (Index p : {a, b})
+        if ((c.flags[p] & kWeak) && (force || strain >= T.weakThreshold) && weakTear(c, p, s, strain, ctx))
+            return true;
+    if (force || strain >= T.threshold) return basicTear(c, s, strain, ctx);
+    return false;
+}
+
+void validateAfterTear(const Cloth& c, const TearContext& ctx) {
+#if CLOTHTEAR_VALIDATE_TEARS
+    const bool always = true;
+#else
+    const bool always = false;
+#endif
+    if (!always && !ctx.settings.validate) return;
+    const std::string err = validateCloth(c);
+    if (!err.empty() && ctx.log && ctx.log->validationError.empty()) ctx.log->validationError = err;
+}
+
+} // namespace
+
+int tearSprings(Cloth& c, std::vector<TearCandidate>& candidates, const TearContext& ctx) {
+    // Most strained first; ties by index so the order is deterministic.
+    std::sort(candidates.begin(), candidates.end(), [](const TearCandidate& x, const TearCandidate& y) {
+        return x.strain != y.strain ? x.strain > y.strain : x.spring < y.spring;
+    });
+    // Springs are renumbered as tears append; remember candidates by their particles.
+    std::vector<std::pair<Index, Index>> ends;
+    ends.reserve(candidates.size());
+    for (const TearCandidate& k : candidates)
+        if (k.spring < c.springs.size()) ends.emplace_back(c.springs[k.spring].a, c.springs[k.spring].b);
+    int tears = 0;
+    for (const auto& [a, b] : ends) {
+        if (tears >= ctx.settings.maxPerStep) break;
+        const Index s = findSpring(c, a, b);
+        if (s == kNone) continue;
+        if (tearOne(c, s, ctx, false)) {
+            ++tears;
+            validateAfterTear(c, ctx);
+        }
+    }
+    return tears;
+}
+
+bool forceTear(Cloth& c, Index s, const TearContext& ctx) {
+    if (s >= c.springs.size()) return false;
+    const bool torn = tearOne(c, s, ctx, true);
+    if (torn) validateAfterTear(c, ctx);
+    return torn;
+}
 
 } // namespace clothtear

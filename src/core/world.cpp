@@ -154,7 +154,7 @@ void World::substep() {
     }
     {
         PhaseTimer t(profile, Phase::Springs);
-        phaseSprings();
+        phaseSprings(dt);
     }
     if (settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f) {
         PhaseTimer t(profile, Phase::Wind);
@@ -208,16 +208,33 @@ void World::phaseForces(float /*dt*/) {
 
 // Structural and bend-shear springs, scattered into per-thread buffers (one contiguous chunk of
 // springs per thread), summed in the integrator.
-void World::phaseSprings() {
+//
+// Stability guard (time.stability_guard, on by default): explicit integration of a spring is stable
+// only while k (1/m_a + 1/m_b) dt^2 stays small. Tearing halves triangles again and again (a midpoint
+// particle gets 1/6 of a normal particle's mass on springs of twice the weight), and a finer mesh has
+// lighter particles; instead of exploding, each spring's stiffness and damping are capped to
+//   k (1/m_a + 1/m_b) dt^2 <= 1/3   and   kd (1/m_a + 1/m_b) dt <= 1/6,
+// which keeps a particle with ~8 springs inside the stable region of semi-implicit Euler. A capped
+// spring is softer than asked for; the Provot limit still holds its length.
+void World::phaseSprings(float dt) {
     const size_t n = cloth.particleCount();
     const int threads = int(scratch_.threadAcc.size());
     const MaterialSettings& m = settings.material;
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
+    const float* invMass = cloth.invMass.data();
+    const bool guard = settings.time.stabilityGuard;
+    const float kCap = 1.f / (3.f * dt * dt), kdCap = 1.f / (6.f * dt);
     auto scatter = [&](const std::vector<Spring>& springs, float ks, float kd, Vec3* acc, Chunk c) {
         for (size_t i = c.begin; i < c.end; ++i) {
             const Spring& s = springs[i];
-            const Vec3 f = springForce(x[s.a], x[s.b], v[s.a], v[s.b], s.rest, ks * s.weight, kd * s.weight);
+            float k = ks * s.weight, damping = kd * s.weight;
+            if (guard) {
+                const float w = invMass[s.a] + invMass[s.b];
+                if (k * w > kCap) k = kCap / w;
+                if (damping * w > kdCap) damping = kdCap / w;
+            }
+            const Vec3 f = springForce(x[s.a], x[s.b], v[s.a], v[s.b], s.rest, k, damping);
             acc[s.a] += f;
             acc[s.b] -= f;
         }
@@ -335,7 +352,8 @@ void World::phaseLimit(float dt) {
     const bool limiting = L.enabled && L.iterations > 0;
     const float maxRatio = 1.f + L.maxStretch;
     const float tearRatio = T.enabled ? 1.f + T.threshold : 1e30f;
-    const float weakRatio = T.enabled ? 1.f + std::min(T.weakThreshold, T.threshold) : 1e30f;
+    // Weak points and one-point connections tear at their own (lower) thresholds (Onal 3.2.2, 3.2.3).
+    const float weakRatio = T.enabled ? 1.f + std::min({T.weakThreshold, T.onePointThreshold, T.threshold}) : 1e30f;
     const bool velocityFix = settings.time.integrator != Integrator::Verlet; // Verlet derives v from x
     Vec3* x = cloth.x.data();
     Vec3* v = cloth.v.data();
@@ -371,7 +389,7 @@ void World::phaseLimit(float dt) {
                 const Vec3 d = x[s.b] - x[s.a];
                 const float len2 = d.squaredNorm();
                 const float maxLen = s.rest * maxRatio;
-                const bool weak = (flags[s.a] | flags[s.b]) & kWeak;
+                const bool weak = (flags[s.a] | flags[s.b]) & (kWeak | kHinge);
                 const float tearLen = s.rest * (weak ? weakRatio : tearRatio);
                 if (pass == 0 && len2 >= tearLen * tearLen)
                     found[t].push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
@@ -417,8 +435,14 @@ void World::phaseLimit(float dt) {
 // ============================================================================================= [TEAR]
 
 void World::phaseTear() {
-    TearContext ctx{settings.tear, time, &tearLog};
+    std::vector<std::pair<Index, Index>> copies;
+    TearContext ctx{settings.tear, time, &tearLog, &copies};
     tearSprings(cloth, scratch_.tearCandidates, ctx);
+    // A particle duplicated by a tear keeps following whatever drove the original.
+    for (const auto& [original, copy] : copies)
+        for (Driver& d : drivers)
+            if (std::find(d.particles.begin(), d.particles.end(), original) != d.particles.end())
+                d.particles.push_back(copy);
 }
 
 // ========================================================================================= [COLLIDE]

@@ -2,6 +2,9 @@
 #include "clothtear/scenes.h"
 
 #include "clothtear/params.h"
+#include "clothtear/tear.h"
+
+#include <algorithm>
 
 #include <cmath>
 
@@ -48,7 +51,103 @@ void dropPopulate(World& w) {
 
 void irregularConfig(Settings& s) { s.cloth.mesh = MeshType::Irregular; }
 
+// ---- tearing scenes (Onal chapter 4) ----------------------------------------------------------------
+
+// The default cloth for the tearing experiments, documented in README ("Tearing scenes").
+void tearClothConfig(Settings& s) {
+    s.cloth.width = 6.f;
+    s.cloth.height = 6.f;
+    s.cloth.resolutionX = 48;
+    s.cloth.resolutionY = 48;
+    s.collision.groundHeight = -5.f;
+}
+
+// Pull: top edge pinned, the bottom-centre particle is dragged at pull.speed along pull.angle in the
+// cloth plane (0 = straight down, positive towards +x).
+void pullConfig(Settings& s) {
+    tearClothConfig(s);
+    s.collision.ground = false;
+}
+void pullPopulate(World& w) {
+    Index grab = 0;
+    double best = 1e300;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+        const double d = (w.cloth.rest[p] - Vec3d(0.0, -0.5 * w.settings.cloth.height, 0.0)).squaredNorm();
+        if (d < best) best = d, grab = p;
+    }
+    const float a = w.settings.scene.pullAngle * float(M_PI / 180.0);
+    w.cloth.setPinned(grab, true);
+    w.drivers.push_back(Driver{{grab}, Vec3(std::sin(a), -std::cos(a), 0.f) * w.settings.scene.pullSpeed});
+}
+
+// Tension: a sheet clamped along its left and right edges, the clamps moving apart; with tension.notch
+// a short vertical slit in the middle starts the tear.
+void tensionConfig(Settings& s) {
+    tearClothConfig(s);
+    s.cloth.pin = PinMode::LeftRightEdges;
+    s.gravity.y = 0.f;
+    s.collision.ground = false;
+}
+void tensionPopulate(World& w) {
+    Driver left, right;
+    double minX = 1e300, maxX = -1e300;
+    for (const Vec3d& r : w.cloth.rest) minX = std::min(minX, r.x()), maxX = std::max(maxX, r.x());
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+        if (!w.cloth.pinned(p)) continue;
+        (w.cloth.rest[p].x() < 0.5 * (minX + maxX) ? left : right).particles.push_back(p);
+    }
+    left.velocity = Vec3(-w.settings.scene.tensionSpeed, 0.f, 0.f);
+    right.velocity = Vec3(w.settings.scene.tensionSpeed, 0.f, 0.f);
+    w.drivers = {left, right};
+    if (!w.settings.scene.tensionNotch) return;
+    // Cut the horizontal spring closest to the centre: a basic tear opens a vertical slit.
+    Index best = kNone;
+    double bestD = 1e300;
+    for (Index s = 0; s < w.cloth.springs.size(); ++s) {
+        const Spring& sp = w.cloth.springs[s];
+        const Vec3d d = w.cloth.rest[sp.b] - w.cloth.rest[sp.a];
+        if (std::abs(d.y()) > 1e-9 * d.norm()) continue;
+        const double dist = (0.5 * (w.cloth.rest[sp.a] + w.cloth.rest[sp.b])).squaredNorm();
+        if (dist < bestD) bestD = dist, best = s;
+    }
+    TearContext ctx{w.settings.tear, 0.0, nullptr};
+    if (best != kNone) forceTear(w.cloth, best, ctx);
+}
+
+// Ball experiments (Onal 4.1): cloth hanging from its top edge, a ball thrown horizontally (-z) at it.
+void ballConfig(Settings& s, float radius, float speed, float height) {
+    tearClothConfig(s);
+    s.scene.ballRadius = radius;
+    s.scene.ballSpeed = speed;
+    s.scene.ballHeight = height;
+}
+void ballPopulate(World& w) {
+    const SceneParams& sp = w.settings.scene;
+    Ball b;
+    b.radius = sp.ballRadius;
+    b.mass = sp.ballMass;
+    const float y = -0.5f * w.settings.cloth.height + sp.ballHeight * w.settings.cloth.height;
+    b.x = Vec3(0.f, y, b.radius + 0.05f);
+    b.v = Vec3(0.f, 0.f, -sp.ballSpeed);
+    w.balls.push_back(b);
+}
+
 const SceneDef kScenes[] = {
+    {"pull", "Top edge pinned, bottom particle pulled along pull.angle: tear runs across the tension", pullConfig,
+     pullPopulate},
+    {"tension", "Sheet clamped at left and right, clamps moving apart (tension.notch=1: pre-cut slit)",
+     tensionConfig, tensionPopulate},
+    {"ball-r0.5-v3", "Ball r=0.5 m at 3 m/s into the hanging cloth (tears)",
+     [](Settings& s) { ballConfig(s, 0.5f, 3.f, 0.5f); }, ballPopulate},
+    {"ball-r1-v3-low", "Ball r=1 m at 3 m/s aimed low (slides under, no tear)",
+     [](Settings& s) { ballConfig(s, 1.f, 3.f, 0.12f); }, ballPopulate},
+    {"ball-r1-v3-high", "Ball r=1 m at 3 m/s aimed high (tears)", [](Settings& s) { ballConfig(s, 1.f, 3.f, 0.8f); },
+     ballPopulate},
+    {"ball-r2-v3", "Ball r=2 m at 3 m/s (cloth slides over it, no tear)",
+     [](Settings& s) { ballConfig(s, 2.f, 3.f, 0.5f); }, ballPopulate},
+    {"ball-r2-v10", "Ball r=2 m at 10 m/s (tears)", [](Settings& s) { ballConfig(s, 2.f, 10.f, 0.5f); },
+     ballPopulate},
+
     {"curtain", "Cloth hanging from its top edge", curtainConfig, noPopulate},
     {"corners", "Cloth hanging from its two top corners", cornersConfig, noPopulate},
     {"flag", "Flag pinned along its left edge, gusty wind", flagConfig, noPopulate},

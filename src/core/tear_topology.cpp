@@ -1,0 +1,168 @@
+// Local topology helpers for tearing (see tear_topology.h).
+#include "tear_topology.h"
+
+#include <algorithm>
+
+namespace clothtear {
+
+namespace {
+// The two springs of triangle t incident to its corner p.
+void spokesOf(const Triangle& t, Index p, Index& first, Index& second) {
+    const int c = cornerOf(t, p);
+    first = t.s[(c + 2) % 3]; // joins p[c+2] and p[c]
+    second = t.s[c];          // joins p[c] and p[c+1]
+}
+Index otherTriangle(const SpringTopo& topo, Index t) { return topo.tri[0] == t ? topo.tri[1] : topo.tri[0]; }
+
+// From t0, leave through spoke `through` and keep crossing spokes around p until a border spoke or
+// until back at t0. Appends the spokes crossed (including the final border spoke) and the triangles
+// entered. Returns true when the walk came back to t0 (a closed fan). Orientation-agnostic.
+bool walkAround(const Cloth& c, Index p, Index t0, Index through, std::vector<Index>& tris, std::vector<Index>& spokes) {
+    Index t = t0, e = through;
+    for (size_t guard = 0; guard <= c.particleTris[p].size(); ++guard) {
+        spokes.push_back(e);
+        const Index next = otherTriangle(c.springTopo[e], t);
+        if (next == kNone) return false;
+        if (next == t0) return true;
+        tris.push_back(next);
+        Index s1, s2;
+        spokesOf(c.triangles[next], p, s1, s2);
+        e = (s1 == e) ? s2 : s1;
+        t = next;
+    }
+    return false;
+}
+} // namespace
+
+std::vector<Fan> fansAround(const Cloth& cloth, Index p) {
+    const std::vector<Index>& tris = cloth.particleTris[p];
+    std::vector<Fan> fans;
+    std::vector<Index> seen;
+    for (Index start : tris) {
+        if (std::find(seen.begin(), seen.end(), start) != seen.end()) continue;
+        Index s1, s2;
+        spokesOf(cloth.triangles[start], p, s1, s2);
+        std::vector<Index> fwdTris, fwdSpokes;
+        Fan fan;
+        if (walkAround(cloth, p, start, s2, fwdTris, fwdSpokes)) {
+            // Closed: the last spoke crossed leads back into `start`; it precedes start in the chain.
+            fan.closed = true;
+            fan.tris.push_back(start);
+            fan.tris.insert(fan.tris.end(), fwdTris.begin(), fwdTris.end());
+            fan.spokes.push_back(fwdSpokes.back());
+            fan.spokes.insert(fan.spokes.end(), fwdSpokes.begin(), fwdSpokes.end() - 1);
+        } else {
+            std::vector<Index> backTris, backSpokes;
+            walkAround(cloth, p, start, s1, backTris, backSpokes);
+            fan.tris.assign(backTris.rbegin(), backTris.rend());
+            fan.tris.push_back(start);
+            fan.tris.insert(fan.tris.end(), fwdTris.begin(), fwdTris.end());
+            fan.spokes.assign(backSpokes.rbegin(), backSpokes.rend());
+            fan.spokes.insert(fan.spokes.end(), fwdSpokes.begin(), fwdSpokes.end());
+        }
+        seen.insert(seen.end(), fan.tris.begin(), fan.tris.end());
+        fans.push_back(std::move(fan));
+    }
+    return fans;
+}
+
+bool isTearTip(const Cloth& cloth, Index p) {
+    const std::vector<Fan> fans = fansAround(cloth, p);
+    if (fans.size() != 1 || fans[0].closed || fans[0].spokes.size() < 3) return false;
+    const Index q1 = otherEnd(cloth.springs[fans[0].spokes.front()], p);
+    const Index q2 = otherEnd(cloth.springs[fans[0].spokes.back()], p);
+    return q1 != q2 && cloth.rest[q1] == cloth.rest[q2];
+}
+
+Index findSpring(const Cloth& cloth, Index a, Index b) {
+    if (a >= cloth.particleCount() || b >= cloth.particleCount()) return kNone;
+    for (Index t : cloth.particleTris[a])
+        for (Index s : cloth.triangles[t].s) {
+            const Spring& sp = cloth.springs[s];
+            if ((sp.a == a && sp.b == b) || (sp.a == b && sp.b == a)) return s;
+        }
+    return kNone;
+}
+
+Index appendParticleCopy(Cloth& c, Index from) {
+    const Index p = Index(c.x.size());
+    c.x.push_back(c.x[from]);
+    c.v.push_back(c.v[from]);
+    c.xPrev.push_back(c.xPrev[from]);
+    c.invMass.push_back(0.f);
+    c.areaShare.push_back(0.0);
+    c.rest.push_back(c.rest[from]);
+    c.flags.push_back(c.flags[from] & kPinned);
+    c.particleTris.emplace_back();
+    return p;
+}
+
+Index appendSpring(Cloth& c, Index a, Index b, double rest) {
+    c.springs.push_back(Spring{a, b, float(rest), 0.f});
+    c.springTopo.push_back(SpringTopo{});
+    return Index(c.springs.size() - 1);
+}
+
+void topoAddTriangle(SpringTopo& topo, Index t) {
+    if (topo.tri[0] == kNone) topo.tri[0] = t;
+    else topo.tri[1] = t;
+}
+void topoRemoveTriangle(SpringTopo& topo, Index t) {
+    if (topo.tri[0] == t) {
+        topo.tri[0] = topo.tri[1];
+        topo.tri[1] = kNone;
+    } else if (topo.tri[1] == t) {
+        topo.tri[1] = kNone;
+    }
+}
+void topoReplaceTriangle(SpringTopo& topo, Index from, Index to) {
+    for (Index& t : topo.tri)
+        if (t == from) t = to;
+}
+void replaceIn(std::vector<Index>& list, Index from, Index to) {
+    for (Index& v : list)
+        if (v == from) v = to;
+}
+void eraseFrom(std::vector<Index>& list, Index value) {
+    list.erase(std::remove(list.begin(), list.end(), value), list.end());
+}
+
+void refreshAround(Cloth& c, const std::vector<Index>& triangles) {
+    std::vector<Index> springs, particles;
+    for (Index t : triangles)
+        for (int i = 0; i < 3; ++i) {
+            springs.push_back(c.triangles[t].s[i]);
+            particles.push_back(c.triangles[t].p[i]);
+        }
+    std::sort(springs.begin(), springs.end());
+    springs.erase(std::unique(springs.begin(), springs.end()), springs.end());
+    for (Index s : springs) {
+        double area = 0;
+        for (Index t : c.springTopo[s].tri)
+            if (t != kNone) area += c.triangles[t].restArea;
+        c.springs[s].weight = springWeight(area, c.springs[s].rest);
+        syncBendSpring(c, s);
+    }
+    // Flags depend on the fans of the corners and of their neighbours (a tip moves along the tear).
+    std::vector<Index> flagged = particles;
+    for (Index s : springs) flagged.push_back(c.springs[s].a), flagged.push_back(c.springs[s].b);
+    std::sort(particles.begin(), particles.end());
+    particles.erase(std::unique(particles.begin(), particles.end()), particles.end());
+    for (Index p : particles) {
+        double share = 0;
+        for (Index t : c.particleTris[p]) share += c.triangles[t].restArea / 3.0;
+        c.areaShare[p] = share;
+        c.refreshInvMass(p);
+    }
+    std::sort(flagged.begin(), flagged.end());
+    flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
+    for (Index p : flagged) {
+        uint8_t f = c.flags[p] & uint8_t(~(kWeak | kHinge));
+        if (fansAround(c, p).size() > 1) f |= kHinge;
+        else if (isTearTip(c, p)) f |= kWeak;
+        c.flags[p] = f;
+    }
+    c.topologyRevision++;
+}
+
+} // namespace clothtear
