@@ -1,0 +1,347 @@
+// The app: window and GL/ImGui setup, the frame loop, screenshots and the exit report.
+//
+// Section index:
+//   [RUN]      run(): script and scene first (clean errors before any window), then the loop
+//   [WINDOW]   GLFW window, GLEW, renderer, ImGui; the no-display message
+//   [FRAME]    one frame: input -> ImGui -> tools -> panel -> requests -> simulation -> draw -> swap
+//   [REQUESTS] scene picks, resets, texture loads asked for by the panel and hotkeys
+//   [OUTPUT]   screenshot, recorded script, JSON report
+#include "app.h"
+
+#include "controls.h"
+#include "image_io.h"
+#include "panel.h"
+
+#include "clothtear/params.h"
+#include "clothtear/scenes.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GL/glew.h>
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+// The key codes of controls.h and key_names.cpp are GLFW's.
+static_assert(clothtear::app::keys::A == GLFW_KEY_A && clothtear::app::keys::F1 == GLFW_KEY_F1 &&
+              clothtear::app::keys::Escape == GLFW_KEY_ESCAPE && clothtear::app::keys::Space == GLFW_KEY_SPACE &&
+              clothtear::app::keys::LeftControl == GLFW_KEY_LEFT_CONTROL &&
+              clothtear::app::keys::RightSuper == GLFW_KEY_RIGHT_SUPER && clothtear::app::keys::F12 == GLFW_KEY_F12 &&
+              clothtear::app::keys::Home == GLFW_KEY_HOME && GLFW_MOUSE_BUTTON_RIGHT == 1 && GLFW_MOUSE_BUTTON_MIDDLE == 2);
+
+#ifndef CLOTHTEAR_DEFAULT_TEXTURE
+#define CLOTHTEAR_DEFAULT_TEXTURE ""
+#endif
+
+namespace clothtear::app {
+namespace {
+
+std::string g_glfwError; // last GLFW error, for the one-line messages (GLFW reports through a C callback)
+
+constexpr int kWindowWidth = 1280, kWindowHeight = 720;
+
+} // namespace
+
+// ============================================================================================== [RUN]
+
+int App::run(const CliOptions& options) {
+    options_ = options;
+    state_.overrides = options.sets;
+    if (!options.script.empty()) {
+        Result<InputScript> loaded = loadInputScript(options.script);
+        if (!loaded.ok()) {
+            std::cerr << "clothtear: " << loaded.error << "\n";
+            return 2;
+        }
+        script_ = std::move(loaded.value);
+        replaying_ = true;
+    }
+    recording_ = !options.record.empty();
+    if (recording_ && !std::ofstream(options.record)) {
+        std::cerr << "clothtear: cannot write the input recording to '" << options.record << "'\n";
+        return 2;
+    }
+    // A replay must see the same simulation as the recording: one step per displayed frame.
+    lockstep_ = replaying_ || recording_ || options.frames >= 0;
+    if (std::string err = loadScene(options.scene, true); !err.empty()) {
+        std::cerr << "clothtear: " << err << "\n";
+        return 2;
+    }
+    if (std::string err = openWindow(); !err.empty()) {
+        std::cerr << err << "\n";
+        return 2;
+    }
+    state_.requestResetView = true;
+    {
+        const View v = currentView();
+        state_.windSource = windSourceAt(v, Vec2(v.width * 0.5f, v.height * 0.5f));
+    }
+
+    uint64_t limit = 0; // 0: until the window closes
+    if (options.frames >= 0) limit = uint64_t(options.frames);
+    else if (replaying_) limit = script_.lastFrame() + 1;
+    const auto start = std::chrono::steady_clock::now();
+    if (options.frames != 0) {
+        for (uint64_t f = 0;; ++f) {
+            const bool closing = glfwWindowShouldClose(window_) || state_.quit;
+            const bool last = closing || (limit && f + 1 >= limit);
+            frame(last);
+            if (last) break;
+        }
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int status = world_.finite ? 0 : 1;
+    if (recording_) {
+        InputScript out = recorded_;
+        out.events.push_back(InputEvent{state_.frame ? state_.frame - 1 : 0, InputKind::End, 0.f, 0.f, 0});
+        std::ofstream file(options.record);
+        file << formatInputScript(out);
+        if (!file) std::cerr << "clothtear: cannot write the input recording to '" << options.record << "'\n", status = 2;
+    }
+    if (!options.json.empty()) {
+        const std::string text = report(wall).dump(2);
+        if (options.json == "-") {
+            std::cout << text << "\n";
+        } else if (std::ofstream out(options.json); out) {
+            out << text << "\n";
+        } else {
+            std::cerr << "clothtear: cannot write report to '" << options.json << "'\n";
+            status = 2;
+        }
+    }
+    if (lockstep_ && options.json != "-") {
+        const auto& t = world_.tearLog.counts;
+        std::cout << "clothtear: " << state_.frame << " frames in " << wall << " s (" << (wall > 0 ? state_.frame / wall : 0)
+                  << " FPS), " << world_.cloth.particleCount() << " particles, tears " << world_.tearLog.total()
+                  << " (basic " << t[0] << ", weak " << t[1] << ", one-point " << t[2] << "), balls thrown "
+                  << state_.ballsThrown << ", hit cloth " << state_.ballsHitCloth << "\n";
+    }
+    closeWindow();
+    return status;
+}
+
+// =========================================================================================== [WINDOW]
+
+std::string App::openWindow() {
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    const std::string remedy = "run it on a virtual display with `xvfb-run -a clothtear ...`, or without a window with "
+                               "`clothtear --headless ...`";
+    if ((!display || !*display) && (!wayland || !*wayland))
+        return "clothtear: no display to open a window on (DISPLAY is not set); " + remedy;
+    glfwSetErrorCallback([](int, const char* description) { g_glfwError = description ? description : "?"; });
+    if (!glfwInit()) return "clothtear: cannot use the display (" + g_glfwError + "); " + remedy;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    window_ = glfwCreateWindow(kWindowWidth, kWindowHeight, "clothtear", nullptr, nullptr);
+    if (!window_) {
+        glfwTerminate();
+        return "clothtear: cannot open an OpenGL 3.3 window (" + g_glfwError + "); " + remedy;
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(lockstep_ ? 0 : 1);
+    glewExperimental = GL_TRUE;
+    if (const GLenum e = glewInit(); e != GLEW_OK) {
+        const std::string why = reinterpret_cast<const char*>(glewGetErrorString(e));
+        closeWindow();
+        return "clothtear: cannot load OpenGL functions (" + why + ")";
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    } // glewInit may leave GL_INVALID_ENUM behind on core profiles
+    if (std::string err = renderer_.init(); !err.empty()) {
+        closeWindow();
+        return "clothtear: " + err;
+    }
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // the panel layout is fixed; replays must not depend on a saved file
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 4.f;
+    // We feed ImGui ourselves (feedImGui), so replays drive the panel exactly as a person does.
+    ImGui_ImplGlfw_InitForOpenGL(window_, false);
+    ImGui_ImplOpenGL3_Init("#version 330");
+    installCallbacks();
+    loadDefaultTexture();
+    return {};
+}
+
+void App::closeWindow() {
+    if (!window_) return;
+    if (ImGui::GetCurrentContext()) {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+    renderer_.shutdown();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+    window_ = nullptr;
+}
+
+void App::loadDefaultTexture() {
+    Result<Image> img = loadImage(CLOTHTEAR_DEFAULT_TEXTURE);
+    if (img.ok()) {
+        renderer_.setTexture(img.value);
+        state_.textureName = CLOTHTEAR_DEFAULT_TEXTURE;
+    } else {
+        // The build writes the PNG; without it, make the same fabric in memory.
+        renderer_.setTexture(makeFabricTexture());
+        state_.textureName = "built-in fabric (generated)";
+    }
+}
+
+// ============================================================================================ [FRAME]
+
+void App::frame(bool last) {
+    glfwPollEvents();
+    if (replaying_) deliverScriptEvents();
+    const double now = glfwGetTime();
+    const double realSeconds = now - lastTime_;
+    lastTime_ = now;
+    const float frameDt = world_.settings.time.frameDt;
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    feedImGui();
+    ImGuiIO& io = ImGui::GetIO();
+    if (lockstep_) io.DeltaTime = frameDt; // replays see the same UI timing as the recording
+    ImGui::NewFrame();
+    const bool uiMouse = io.WantCaptureMouse, uiKeyboard = io.WantCaptureKeyboard;
+
+    handleEvents(uiMouse, uiKeyboard);
+    handleContinuous(lockstep_ ? frameDt : float(realSeconds), uiKeyboard);
+    drawControlPanel(state_, world_);
+    drawStatsPane(state_, world_);
+    drawHelpOverlay(state_);
+    serveRequests();
+    simulate(realSeconds);
+
+    const View view = currentView();
+    drawToolHud(state_, world_, view, input_.mouseX, input_.mouseY, uiMouse);
+    ImGui::Render();
+    int fbWidth = 0, fbHeight = 0;
+    glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
+    renderer_.draw(world_, state_.render, view, fbWidth, fbHeight);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (last && !options_.screenshot.empty())
+        if (std::string err = writeScreenshot(options_.screenshot); !err.empty()) std::cerr << "clothtear: " << err << "\n";
+    if (state_.requestScreenshot) {
+        state_.requestScreenshot = false;
+        const std::string name = "clothtear-" + std::to_string(state_.frame) + ".png";
+        const std::string err = writeScreenshot(name);
+        state_.message = err.empty() ? "Saved " + name : err;
+    }
+    glfwSwapBuffers(window_);
+    input_.endFrame();
+    updateStats(now);
+    state_.frame++;
+}
+
+// ========================================================================================= [REQUESTS]
+
+void App::serveRequests() {
+    if (state_.requestScene >= 0) {
+        const auto scenes = allScenes();
+        if (state_.requestScene < int(scenes.size())) {
+            const std::string err = loadScene(scenes[state_.requestScene].name, false);
+            state_.message = err.empty() ? std::string("Scene: ") + scenes[state_.requestScene].description : err;
+            if (err.empty()) state_.requestResetView = true;
+        }
+        state_.requestScene = -1;
+    }
+    if (state_.requestDefaults) {
+        state_.requestDefaults = false;
+        const std::string err = loadScene(state_.scene, false);
+        state_.message = err.empty() ? "Parameters back to the defaults of " + state_.scene : err;
+    }
+    if (state_.requestReset) {
+        state_.requestReset = false;
+        rebuildWorld();
+    }
+    if (state_.requestResetView) {
+        state_.requestResetView = false;
+        const Cloth& c = world_.cloth;
+        Vec3 lo = Vec3::Constant(-1.f), hi = Vec3::Constant(1.f);
+        if (c.particleCount()) {
+            lo = hi = c.x[0];
+            for (const Vec3& x : c.x)
+                if (x.allFinite()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+        }
+        state_.camera.frame(lo, hi);
+    }
+    if (state_.requestLoadTexture) {
+        state_.requestLoadTexture = false;
+        const std::string path(state_.texturePath.data());
+        Result<Image> img = loadImage(path);
+        if (img.ok()) {
+            renderer_.setTexture(img.value);
+            state_.textureName = path;
+            state_.textureError.clear();
+        } else {
+            state_.textureError = img.error + "; keeping the current texture";
+        }
+    }
+    if (state_.requestDefaultTexture) {
+        state_.requestDefaultTexture = false;
+        state_.textureError.clear();
+        loadDefaultTexture();
+    }
+}
+
+// =========================================================================================== [OUTPUT]
+
+std::string App::writeScreenshot(const std::string& path) {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_, &w, &h);
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.resize(size_t(w) * h * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    // GL rows start at the bottom; PNG rows at the top.
+    const size_t row = size_t(w) * 4;
+    std::vector<uint8_t> tmp(row);
+    for (int y = 0; y < h / 2; ++y) {
+        uint8_t* a = &img.rgba[size_t(y) * row];
+        uint8_t* b = &img.rgba[size_t(h - 1 - y) * row];
+        std::copy_n(a, row, tmp.data());
+        std::copy_n(b, row, a);
+        std::copy_n(tmp.data(), row, b);
+    }
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+    return savePng(path, img);
+}
+
+nlohmann::json App::report(double wallSeconds) const {
+    nlohmann::json r = makeReport(world_, state_.scene, wallSeconds);
+    nlohmann::json settings = nlohmann::json::object();
+    for (const ParamInfo& p : allParams()) settings[p.name] = formatParamValue(world_.settings, p);
+    r["settings"] = settings;
+    r["app"] = {
+        {"frames", state_.frame},
+        {"fps", wallSeconds > 0 ? double(state_.frame) / wallSeconds : 0.0},
+        {"lockstep", lockstep_},
+        {"paused", state_.paused},
+        {"tool", toolName(state_.tool)},
+        {"balls_thrown", state_.ballsThrown},
+        {"balls_hit_cloth", state_.ballsHitCloth},
+        {"script_events", script_.events.size()},
+        {"topology_uploads", renderer_.topologyUploads()},
+        {"texture", state_.textureName},
+        {"texture_error", state_.textureError},
+    };
+    return r;
+}
+
+} // namespace clothtear::app

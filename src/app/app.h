@@ -1,0 +1,72 @@
+// The desktop app: a GLFW window with the renderer, the ImGui panel and the tools around one World.
+//
+//   app.cpp        window, GL/ImGui setup, the frame loop, screenshots, the exit report
+//   app_input.cpp  input routing: GLFW callbacks and script replay -> InputState -> ImGui first, then
+//                  hotkeys, camera and tools
+//   app_sim.cpp    scene loading, rebuilds, the fixed-step simulation and the stats
+#pragma once
+#include "app_state.h"
+#include "input_state.h"
+#include "renderer.h"
+#include "cli/runner.h"
+
+#include <nlohmann/json.hpp>
+
+struct GLFWwindow;
+
+namespace clothtear::app {
+
+class App {
+public:
+    // Runs the window until it is closed, --frames are done or the script ended. Exit status.
+    int run(const CliOptions& options);
+
+private:
+    // app.cpp
+    std::string openWindow();
+    void closeWindow();
+    void frame(bool last);
+    void serveRequests();
+    std::string writeScreenshot(const std::string& path);
+    nlohmann::json report(double wallSeconds) const;
+    void loadDefaultTexture();
+    // app_input.cpp
+    void installCallbacks();
+    void onRealEvent(InputEvent e);
+    void deliverScriptEvents();
+    void feedImGui();
+    void handleEvents(bool uiMouse, bool uiKeyboard);
+    void handleKey(int key, bool uiKeyboard);
+    void handleContinuous(float seconds, bool uiKeyboard);
+    View currentView() const;
+    // app_sim.cpp
+    std::string loadScene(const std::string& name, bool withOverrides);
+    void rebuildWorld();
+    void simulate(double realSeconds);
+    void stepOnce();
+    void trackBalls();
+    void updateStats(double now);
+
+    CliOptions options_;
+    GLFWwindow* window_ = nullptr;
+    World world_;
+    AppState state_;
+    Renderer renderer_;
+    InputState input_;
+    // replay and recording
+    InputScript script_;
+    size_t scriptPos_ = 0;
+    bool replaying_ = false;
+    bool recording_ = false;
+    InputScript recorded_;
+    bool lockstep_ = false; // one simulation step per displayed frame (replays, --frames, recording)
+    // mouse ownership: a press that ImGui took stays ImGui's until released
+    std::array<bool, 3> uiOwnsButton_{};
+    float lastMouseX_ = 0.f, lastMouseY_ = 0.f;
+    float rightPressX_ = 0.f, rightPressY_ = 0.f;
+    bool rightDragged_ = false;
+    bool orbiting_ = false, panning_ = false;
+    double lastTime_ = 0.0;
+};
+
+} // namespace clothtear::app

@@ -1,0 +1,111 @@
+// The simulation side of the app: scenes, rebuilds, the fixed-step loop and the stats.
+#include "app.h"
+
+#include "clothtear/scenes.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace clothtear::app {
+
+std::string App::loadScene(const std::string& name, bool withOverrides) {
+    const std::vector<std::string> none;
+    // clothtear::loadScene leaves the world as it was on error.
+    if (std::string err = clothtear::loadScene(world_, name, withOverrides ? state_.overrides : none); !err.empty())
+        return err;
+    state_.scene = name;
+    state_.drag = DragState{};
+    state_.windBlowing = false;
+    state_.ballFlags.assign(world_.balls.size(), 0);
+    state_.clock.reset();
+    state_.stats.sampleStart = -1;
+    return {};
+}
+
+void App::rebuildWorld() {
+    // The rebuild makes new particles: a held particle index would now mean another one.
+    state_.drag = DragState{};
+    state_.windBlowing = false;
+    if (std::string err = world_.rebuild(); !err.empty()) {
+        state_.message = "Rebuild failed: " + err;
+        return;
+    }
+    if (const SceneDef* scene = findScene(state_.scene)) scene->populate(world_);
+    state_.ballFlags.assign(world_.balls.size(), 0);
+    state_.clock.reset();
+    state_.stats.sampleStart = -1;
+    state_.message.clear();
+}
+
+void App::simulate(double realSeconds) {
+    int steps = 0;
+    if (state_.paused) {
+        state_.clock.reset();
+        if (state_.stepRequests > 0) steps = 1, state_.stepRequests--;
+    } else if (lockstep_) {
+        steps = 1;
+    } else {
+        steps = state_.clock.advance(realSeconds, world_.settings.time.frameDt);
+    }
+    for (int i = 0; i < steps; ++i) stepOnce();
+}
+
+void App::stepOnce() {
+    const bool pushed = dragBeforeStep(world_, state_.drag, state_.tools.maxDragSpeed);
+    if (state_.tools.windFixed || (state_.windBlowing && state_.tool == Tool::Wind))
+        applyWind(world_, state_.windSource, state_.tools.radiusPx, state_.tools.windPressure,
+                  world_.settings.time.frameDt);
+    const auto start = std::chrono::steady_clock::now();
+    world_.step();
+    state_.clock.reportStepCost(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    dragAfterStep(world_, pushed);
+    trackBalls();
+}
+
+// A thrown ball "hit the cloth" once any particle came within its radius plus a small margin.
+void App::trackBalls() {
+    state_.ballFlags.resize(world_.balls.size(), 0);
+    const float margin = std::max(0.03f, 2.f * world_.settings.collision.thickness);
+    for (size_t i = 0; i < world_.balls.size(); ++i) {
+        uint8_t& f = state_.ballFlags[i];
+        if (!(f & kBallThrown) || (f & kBallTouched)) continue;
+        const Ball& b = world_.balls[i];
+        const float r2 = (b.radius + margin) * (b.radius + margin);
+        for (const Vec3& x : world_.cloth.x)
+            if ((x - b.x).squaredNorm() < r2) {
+                f |= kBallTouched;
+                state_.ballsHitCloth++;
+                break;
+            }
+    }
+}
+
+void App::updateStats(double now) {
+    Stats& s = state_.stats;
+    if (s.sampleStart < 0 || world_.steps < s.stepsAtStart) {
+        s.sampleStart = now;
+        s.frames = 0;
+        s.profileAtStart = world_.profile;
+        s.stepsAtStart = world_.steps;
+        return;
+    }
+    s.frames++;
+    const double elapsed = now - s.sampleStart;
+    if (elapsed < 0.5) return;
+    const uint64_t steps = world_.steps - s.stepsAtStart;
+    s.fps = s.frames / elapsed;
+    s.simFps = double(steps) / elapsed;
+    double total = 0;
+    for (int p = 0; p < int(Phase::Count); ++p) {
+        s.phaseMs[p] = steps ? (world_.profile.ms[p] - s.profileAtStart.ms[p]) / double(steps) : 0.0;
+        total += s.phaseMs[p];
+    }
+    s.msPerStep = total;
+    s.sampleStart = now;
+    s.frames = 0;
+    s.profileAtStart = world_.profile;
+    s.stepsAtStart = world_.steps;
+}
+
+} // namespace clothtear::app

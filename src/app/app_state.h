@@ -1,0 +1,95 @@
+// All UI state of the app in one struct: the scene, the active tool and its settings, the camera, what
+// the renderer shows, the panel's switches, the requests the panel makes to the main loop, and the
+// stats shown. The World (simulation state) is kept apart, in App.
+#pragma once
+#include "camera.h"
+#include "sim_clock.h"
+#include "tools.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace clothtear::app {
+
+// What the renderer shows and how it lights it (Gouraud: lighting per vertex, see shaders/cloth.vert.glsl).
+struct RenderOptions {
+    bool texture = true;            // texture the front of the cloth (else the tint alone)
+    bool flat = false;              // flat shading: one normal per triangle, lit per fragment
+    bool strainColors = false;      // colour by strain: blue (0) .. red (tear threshold)
+    bool structuralSprings = false; // wireframe of the structural springs (triangle edges)
+    bool bendSprings = false;       // wireframe of the bend-shear springs
+    bool weakPoints = true;         // orange dots on weak points (torn edges, Onal 3.2.2)
+    bool pinnedParticles = true;    // dark red dots on pinned particles
+    std::array<float, 3> lightDir{0.45f, 0.8f, 0.55f};   // towards the light (normalized at use)
+    std::array<float, 3> lightColor{1.f, 0.96f, 0.88f};  // diffuse and specular colour
+    std::array<float, 3> ambient{0.30f, 0.32f, 0.36f};   // ambient colour
+    float specular = 0.18f;                              // [0, 2]   specular strength
+    float shininess = 24.f;                              // [1, 256] Blinn-Phong exponent
+    std::array<float, 3> frontTint{1.f, 1.f, 1.f};       // multiplies the texture on the front
+    std::array<float, 3> backColor{0.62f, 0.22f, 0.26f}; // the back of the cloth has its own colour
+    std::array<float, 3> sky{0.60f, 0.74f, 0.90f};       // clear colour
+    std::array<float, 3> ground{0.55f, 0.57f, 0.52f};    // ground plane colour
+    std::array<float, 3> ballColor{0.85f, 0.55f, 0.15f}; // thrown balls
+};
+
+// Measured over the last half second, shown in the stats pane.
+struct Stats {
+    double fps = 0;          // displayed frames per second
+    double simFps = 0;       // simulated frames per second (60 = real time at the default frame_dt)
+    double msPerStep = 0;    // wall ms per world.step()
+    std::array<double, int(Phase::Count)> phaseMs{}; // ms per step in each phase
+    // bookkeeping for the averages
+    double sampleStart = -1; // s (glfwGetTime)
+    int frames = 0;
+    uint64_t steps = 0;
+    StepProfile profileAtStart;
+    uint64_t stepsAtStart = 0;
+};
+
+inline constexpr uint8_t kBallThrown = 1, kBallTouched = 2;
+
+struct AppState {
+    // ---- scene
+    std::string scene = "curtain";
+    std::vector<std::string> overrides; // --set key=value from the command line, applied on scene loads
+    // ---- tools
+    Tool tool = Tool::Drag;
+    ToolSettings tools;
+    DragState drag;
+    WindSource windSource;    // where the wind tool blows (follows the cursor unless fixed)
+    bool windBlowing = false; // the wind tool's button is held
+    // ---- view
+    OrbitCamera camera;
+    RenderOptions render;
+    // ---- simulation control
+    bool paused = false;
+    int stepRequests = 0;     // single steps asked for while paused
+    bool allowUnsafe = false; // sliders span the hard ranges instead of the safe ones (Keserica 6.2)
+    SimClock clock;
+    // ---- panel
+    bool showPanel = true;
+    bool showStats = true;
+    bool showHelp = false;
+    std::array<char, 512> texturePath{}; // the path field of the texture loader
+    std::string textureName;       // what is loaded now
+    std::string textureError;      // shown in red under the loader; the current texture stays
+    std::string message;           // last status line (scene errors, screenshots)
+    // ---- requests from the panel and hotkeys, served by the main loop once per frame
+    int requestScene = -1;         // index into allScenes()
+    bool requestReset = false;     // rebuild the cloth from the current settings
+    bool requestDefaults = false;  // back to the scene's default settings
+    bool requestResetView = false;
+    bool requestLoadTexture = false;
+    bool requestDefaultTexture = false;
+    bool requestScreenshot = false;
+    bool quit = false;
+    // ---- counters and stats
+    uint64_t frame = 0;            // displayed frames so far
+    int ballsThrown = 0;
+    int ballsHitCloth = 0;         // thrown balls that touched the cloth
+    std::vector<uint8_t> ballFlags; // per world.balls entry: kBallThrown | kBallTouched
+    Stats stats;
+};
+
+} // namespace clothtear::app

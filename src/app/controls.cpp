@@ -1,0 +1,39 @@
+// The controls table (see controls.h).
+#include "controls.h"
+
+namespace clothtear::app {
+
+namespace {
+const ControlHelp kControls[] = {
+    {"Left button", "Use the active tool (Drag, Wind, Impulse, Ball, Pin)"},
+    {"1 2 3 4 5", "Tool: Drag / Wind / Impulse / Ball / Pin"},
+    {"Drag tool", "Left drag pulls the particle under the cursor; pull hard to tear"},
+    {"X (while dragging)", "Pin the grabbed particle where it is and let go"},
+    {"Wind tool", "Hold left to blow along the view; wheel = strength; L fixes the source"},
+    {"Impulse tool", "Left click pushes away, right click pulls towards you"},
+    {"Ball tool", "Left click throws a ball through the cursor; B clears balls"},
+    {"Pin tool", "Left click pins / unpins the particle under the cursor"},
+    {"Right drag", "Orbit the camera"},
+    {"Middle drag", "Pan the camera"},
+    {"Wheel", "Zoom (Ctrl+wheel with the wind tool)"},
+    {"W A S D", "Fly forward / left / back / right"},
+    {"Space / C", "Fly up / down"},
+    {"V or Home", "Reset the view"},
+    {"P", "Pause / resume"},
+    {"N", "Single step (while paused)"},
+    {"R", "Reset the cloth"},
+    {"F", "Flat shading on / off"},
+    {"T", "Texture on / off"},
+    {"G / H", "Wireframe: structural / bend-shear springs"},
+    {"K", "Strain colour map"},
+    {"F1", "This help"},
+    {"F2", "Hide / show the panel"},
+    {"F12", "Save a screenshot (clothtear-FRAME.png)"},
+    {"Esc", "Close help, let go of the cloth"},
+    {"Ctrl+Q", "Quit"},
+};
+} // namespace
+
+std::span<const ControlHelp> controlsHelp() { return kControls; }
+
+} // namespace clothtear::app

@@ -1,0 +1,275 @@
+// ImGui windows of the app.
+//
+// Section index:
+//   [PANEL]   scene, simulation, quick switches, tools, view, texture, parameters
+//   [STATS]   FPS, ms per phase, counts, tears per mode, energy, strain
+//   [HELP]    the controls table
+//   [HUD]     tool cursor over the view
+#include "panel.h"
+
+#include "controls.h"
+#include "param_widgets.h"
+
+#include "clothtear/params.h"
+#include "clothtear/scenes.h"
+
+#include <imgui.h>
+#include <string>
+
+namespace clothtear::app {
+namespace {
+
+bool toggleParam(Settings& s, const char* name, const char* label) {
+    const ParamInfo* p = findParam(name);
+    if (!p) return false;
+    bool v = getParam(s, *p) != 0.0;
+    const bool changed = ImGui::Checkbox(label, &v);
+    if (changed) setParamUnchecked(s, *p, v ? 1.0 : 0.0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", p->name, p->help);
+    return changed;
+}
+
+void colorEdit(const char* label, std::array<float, 3>& c) {
+    ImGui::ColorEdit3(label, c.data(), ImGuiColorEditFlags_NoInputs);
+}
+
+void toolOptions(AppState& st, World& world) {
+    ToolSettings& t = st.tools;
+    switch (st.tool) {
+    case Tool::Drag:
+        ImGui::TextWrapped("Left drag pulls the particle under the cursor in the camera-facing plane; pull hard to "
+                           "tear. X pins it where it is.");
+        ImGui::SliderFloat("max speed", &t.maxDragSpeed, 1.f, 500.f, "%.0f m/s", ImGuiSliderFlags_Logarithmic);
+        break;
+    case Tool::Wind:
+        ImGui::SliderFloat("strength", &t.windPressure, 0.f, 2000.f, "%.3g Pa",
+                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Force per square metre of cloth at the centre (wheel changes it)");
+        ImGui::SliderFloat("radius", &t.radiusPx, 5.f, 400.f, "%.0f px", ImGuiSliderFlags_AlwaysClamp);
+        if (ImGui::Checkbox("fix source here (L)", &t.windFixed) && !t.windFixed) st.windBlowing = false;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The wind keeps blowing from where it is now, also when the camera moves");
+        break;
+    case Tool::Impulse:
+        ImGui::SliderFloat("impulse", &t.impulse, 0.f, 50.f, "%.2f m/s", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::SliderFloat("radius", &t.radiusPx, 5.f, 400.f, "%.0f px", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::TextDisabled("Left click pushes, right click pulls.");
+        break;
+    case Tool::Ball:
+        paramWidgets(world.settings, "ball.", st.allowUnsafe);
+        break;
+    case Tool::Pin:
+        ImGui::TextWrapped("Left click pins or unpins the particle under the cursor.");
+        break;
+    case Tool::Count: break;
+    }
+}
+
+void viewSection(AppState& st) {
+    RenderOptions& r = st.render;
+    ImGui::Checkbox("texture (T)", &r.texture);
+    ImGui::SameLine();
+    ImGui::Checkbox("flat (F)", &r.flat);
+    ImGui::SameLine();
+    ImGui::Checkbox("strain (K)", &r.strainColors);
+    ImGui::TextDisabled("Overlays");
+    ImGui::Checkbox("structural springs (G)", &r.structuralSprings);
+    ImGui::Checkbox("bend-shear springs (H)", &r.bendSprings);
+    ImGui::Checkbox("weak points", &r.weakPoints);
+    ImGui::SameLine();
+    ImGui::Checkbox("pinned", &r.pinnedParticles);
+    ImGui::TextDisabled("Light (Gouraud: per-vertex lighting)");
+    ImGui::SliderFloat3("direction", r.lightDir.data(), -1.f, 1.f, "%.2f");
+    colorEdit("light", r.lightColor);
+    ImGui::SameLine();
+    colorEdit("ambient", r.ambient);
+    ImGui::SameLine();
+    colorEdit("front tint", r.frontTint);
+    colorEdit("back", r.backColor);
+    ImGui::SameLine();
+    colorEdit("sky", r.sky);
+    ImGui::SameLine();
+    colorEdit("ground", r.ground);
+    ImGui::SameLine();
+    colorEdit("balls", r.ballColor);
+    ImGui::SliderFloat("specular", &r.specular, 0.f, 2.f, "%.2f");
+    ImGui::SliderFloat("shininess", &r.shininess, 1.f, 256.f, "%.0f", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::Button("Reset view (V)")) st.requestResetView = true;
+}
+
+void textureSection(AppState& st) {
+    ImGui::TextWrapped("Now: %s", st.textureName.c_str());
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
+    const bool enter = ImGui::InputTextWithHint("##texpath", "path/to/image.png or .jpg", st.texturePath.data(),
+                                                st.texturePath.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (ImGui::Button("Load") || enter) st.requestLoadTexture = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Default")) st.requestDefaultTexture = true;
+    if (!st.textureError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
+        ImGui::TextWrapped("%s", st.textureError.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+} // namespace
+
+// ============================================================================================ [PANEL]
+
+void drawControlPanel(AppState& st, World& world) {
+    if (!st.showPanel) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.88f);
+    ImGui::Begin("clothtear", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                           ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.58f);
+
+    // Scene picker: every scene of the headless runner.
+    const auto scenes = allScenes();
+    if (ImGui::BeginCombo("scene", st.scene.c_str())) {
+        for (int i = 0; i < int(scenes.size()); ++i) {
+            if (ImGui::Selectable(scenes[i].name, st.scene == scenes[i].name)) st.requestScene = i;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", scenes[i].description);
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::Button("Reset (R)")) st.requestReset = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rebuild the cloth with the current parameters");
+    ImGui::SameLine();
+    if (ImGui::Button("Defaults")) st.requestDefaults = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Every parameter back to the scene's default");
+    ImGui::SameLine();
+    ImGui::Checkbox("Pause (P)", &st.paused);
+    ImGui::SameLine();
+    if (ImGui::Button("Step (N)")) st.paused = true, st.stepRequests++;
+
+    // Quick switches (each is a row of the parameter table).
+    toggleParam(world.settings, "tear.enabled", "Tearing");
+    ImGui::SameLine();
+    toggleParam(world.settings, "wind.enabled", "Wind");
+    ImGui::SameLine();
+    toggleParam(world.settings, "collision.ground", "Ground");
+    ImGui::SameLine();
+    if (ImGui::Button("Clear balls (B)")) world.balls.clear(), st.ballFlags.clear();
+
+    ImGui::Separator();
+    for (int i = 0; i < int(Tool::Count); ++i) {
+        if (i) ImGui::SameLine();
+        const std::string label = std::string(toolName(Tool(i))) + "##tool";
+        if (ImGui::RadioButton(label.c_str(), st.tool == Tool(i))) st.tool = Tool(i);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Hotkey %d", i + 1);
+    }
+    toolOptions(st, world);
+    ImGui::Separator();
+
+    if (ImGui::CollapsingHeader("View")) viewSection(st);
+    if (ImGui::CollapsingHeader("Texture")) textureSection(st);
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Checkbox("allow unsafe values", &st.allowUnsafe);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Sliders span the hard ranges: push the simulation past its stable range on purpose.");
+        if (parameterGroups(world.settings, st.allowUnsafe)) st.requestReset = true;
+    }
+    if (!st.message.empty()) {
+        ImGui::Separator();
+        ImGui::TextWrapped("%s", st.message.c_str());
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+// ============================================================================================ [STATS]
+
+void drawStatsPane(AppState& st, const World& world) {
+    if (!st.showStats) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float width = 300.f;
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width - 8.f, 8.f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, 0.f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.7f);
+    ImGui::Begin("Stats", &st.showStats, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                             ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+    const Stats& s = st.stats;
+    const Cloth& c = world.cloth;
+    ImGui::Text("FPS %.1f   sim %.1f frames/s", s.fps, s.simFps);
+    if (st.paused) ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "paused");
+    else if (st.clock.slowedDown)
+        ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "slower than real time (%.0f%%)",
+                           100.0 * s.simFps * world.settings.time.frameDt);
+    ImGui::Text("step %.2f ms  (%d sub-steps)", s.msPerStep, world.settings.time.substeps);
+    if (ImGui::BeginTable("phases", 2, ImGuiTableFlags_SizingStretchProp)) {
+        for (int p = 0; p < int(Phase::Count); ++p) {
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", phaseName(Phase(p)));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f ms", s.phaseMs[p]);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Separator();
+    size_t pinned = 0, weak = 0;
+    for (uint8_t f : c.flags) pinned += (f & kPinned) != 0, weak += (f & kWeak) != 0;
+    ImGui::Text("particles %zu (pinned %zu, weak %zu)", c.particleCount(), pinned, weak);
+    ImGui::Text("springs %zu + bend-shear %zu", c.springs.size(), c.bends.size());
+    ImGui::Text("triangles %zu", c.triangles.size());
+    ImGui::Text("tears: basic %llu  weak %llu  one-point %llu", (unsigned long long)world.tearLog.counts[0],
+                (unsigned long long)world.tearLog.counts[1], (unsigned long long)world.tearLog.counts[2]);
+    const double ke = world.kineticEnergy(), pe = world.potentialEnergy();
+    ImGui::Text("energy: kinetic %.3g J, potential %.3g J", ke, pe);
+    ImGui::Text("max strain %.3f (tears at %.2f)", world.maxStrain, world.settings.tear.threshold);
+    ImGui::Text("balls %zu   t = %.2f s", world.balls.size(), world.time);
+    if (!world.finite) ImGui::TextColored(ImVec4(1.f, 0.3f, 0.3f, 1.f), "NON-FINITE: %s", world.nonFiniteWhere.c_str());
+    ImGui::TextDisabled("F1: help");
+    ImGui::End();
+}
+
+// ============================================================================================= [HELP]
+
+void drawHelpOverlay(AppState& st) {
+    if (!st.showHelp) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    ImGui::Begin("Controls (F1)", &st.showHelp, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        for (const ControlHelp& c : controlsHelp()) {
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(1.f, 0.85f, 0.45f, 1.f), "%s", c.input);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(c.action);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TextDisabled("The panel gets the mouse and keyboard first when the cursor is over it.");
+    ImGui::End();
+}
+
+// ============================================================================================== [HUD]
+
+void drawToolHud(const AppState& st, const World& world, const View& view, float mx, float my, bool overUi) {
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    const ImU32 wind = IM_COL32(90, 170, 255, 200), impulse = IM_COL32(255, 190, 60, 200);
+    if (!overUi && (st.tool == Tool::Wind || st.tool == Tool::Impulse))
+        dl->AddCircle(ImVec2(mx, my), st.tools.radiusPx, st.tool == Tool::Wind ? wind : impulse, 48, 1.5f);
+    if (st.tool == Tool::Wind && !overUi)
+        dl->AddText(ImVec2(mx + 10.f, my + 10.f), wind, (std::to_string(int(st.tools.windPressure + 0.5f)) + " Pa").c_str());
+    if (st.tools.windFixed) {
+        const Vec2& c = st.windSource.center;
+        dl->AddCircle(ImVec2(c.x(), c.y()), st.tools.radiusPx, wind, 48, 2.5f);
+        dl->AddText(ImVec2(c.x() - 18.f, c.y() - 6.f), wind, "wind");
+    }
+    if (st.drag.active() && st.drag.particle < world.cloth.particleCount()) {
+        Vec2 a, b;
+        if (projectToWindow(view.viewProjection, world.cloth.x[st.drag.particle], view.width, view.height, a) &&
+            projectToWindow(view.viewProjection, st.drag.target, view.width, view.height, b)) {
+            dl->AddLine(ImVec2(a.x(), a.y()), ImVec2(b.x(), b.y()), IM_COL32(255, 80, 60, 220), 2.f);
+            dl->AddCircleFilled(ImVec2(a.x(), a.y()), 4.f, IM_COL32(255, 80, 60, 255));
+        }
+    }
+}
+
+} // namespace clothtear::app

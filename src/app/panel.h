@@ -1,0 +1,20 @@
+// The ImGui windows: the control panel (scene, simulation, quick switches, tools, view, parameters),
+// the stats pane, the help overlay (F1), and the tool cursor drawn over the 3D view. They edit the
+// AppState and the world's settings; anything heavier (rebuilds, scene loads, texture loads) is asked of
+// the main loop through the request fields of AppState.
+#pragma once
+#include "app_state.h"
+#include "clothtear/world.h"
+
+namespace clothtear::app {
+
+inline constexpr float kPanelWidth = 380.f; // px
+
+void drawControlPanel(AppState& state, World& world);
+void drawStatsPane(AppState& state, const World& world);
+void drawHelpOverlay(AppState& state);
+// Tool feedback over the view: the wind/impulse radius at the cursor, the fixed wind source, the drag line.
+void drawToolHud(const AppState& state, const World& world, const View& view, float mouseX, float mouseY,
+                 bool mouseOverUi);
+
+} // namespace clothtear::app

@@ -1,0 +1,305 @@
+// Drawing the world with OpenGL 3.3 core.
+//
+// Section index:
+//   [INIT]      programs, buffers, the sphere mesh, textures
+//   [FRAME]     draw(): clear, ground, cloth, balls, overlays
+//   [CLOTH]     render-mesh upload (topology only on revision change), lighting uniforms
+//   [OVERLAYS]  structural / bend-shear springs as lines, weak and pinned particles as points
+#include "renderer.h"
+
+#include "gl_util.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+namespace clothtear::app {
+
+// ============================================================================================= [INIT]
+
+std::string Renderer::init() {
+    struct P {
+        GLuint* target;
+        const char *vs, *fs;
+    } programs[] = {{&clothProgram_, "cloth.vert.glsl", "cloth.frag.glsl"},
+                    {&litProgram_, "lit.vert.glsl", "lit.frag.glsl"},
+                    {&groundProgram_, "ground.vert.glsl", "ground.frag.glsl"},
+                    {&linesProgram_, "lines.vert.glsl", "lines.frag.glsl"}};
+    for (const P& p : programs) {
+        Result<GLuint> r = buildProgram(p.vs, p.fs);
+        if (!r.ok()) return r.error;
+        *p.target = r.value;
+    }
+
+    // Cloth: attribute 0..2 interleaved dynamic (position, normal, strain), 3 static uv.
+    glGenVertexArrays(1, &clothVao_);
+    glGenBuffers(1, &clothDynamicVbo_);
+    glGenBuffers(1, &clothUvVbo_);
+    glGenBuffers(1, &clothEbo_);
+    glBindVertexArray(clothVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, clothDynamicVbo_);
+    const GLsizei stride = kDynamicFloats * sizeof(float);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+    glBindBuffer(GL_ARRAY_BUFFER, clothUvVbo_);
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
+    glBindVertexArray(0);
+
+    // Overlays: particle positions straight from cloth.x (Vec3 is three packed floats).
+    static_assert(sizeof(Vec3) == 3 * sizeof(float), "cloth.x must be packed floats for the overlay upload");
+    glGenVertexArrays(1, &overlayVao_);
+    glGenBuffers(1, &particleVbo_);
+    glGenBuffers(1, &structuralEbo_);
+    glGenBuffers(1, &bendEbo_);
+    glGenBuffers(1, &pointsEbo_);
+    glBindVertexArray(overlayVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, particleVbo_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindVertexArray(0);
+
+    // Ground quad.
+    const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    glGenVertexArrays(1, &groundVao_);
+    glGenBuffers(1, &groundVbo_);
+    glBindVertexArray(groundVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, groundVbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindVertexArray(0);
+
+    buildSphere();
+    glGenTextures(1, &texture_);
+    return {};
+}
+
+// A unit UV sphere; position doubles as normal.
+void Renderer::buildSphere() {
+    const int rings = 16, segments = 28;
+    std::vector<float> v;
+    std::vector<uint32_t> idx;
+    for (int r = 0; r <= rings; ++r) {
+        const float phi = float(M_PI) * float(r) / rings;
+        for (int s = 0; s <= segments; ++s) {
+            const float theta = 2.f * float(M_PI) * float(s) / segments;
+            v.push_back(std::sin(phi) * std::cos(theta));
+            v.push_back(std::cos(phi));
+            v.push_back(std::sin(phi) * std::sin(theta));
+        }
+    }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const uint32_t a = r * (segments + 1) + s, b = a + segments + 1;
+            idx.insert(idx.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    glGenVertexArrays(1, &sphereVao_);
+    glGenBuffers(1, &sphereVbo_);
+    glGenBuffers(1, &sphereEbo_);
+    glBindVertexArray(sphereVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphereEbo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * sizeof(uint32_t)), idx.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    sphereIndexCount_ = GLsizei(idx.size());
+}
+
+void Renderer::setTexture(const Image& image) {
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // Upload bottom row first: GL puts the first row at v = 0, and the cloth has v = 1 at its top edge.
+    std::vector<uint8_t> flipped(image.rgba.size());
+    const size_t row = size_t(image.width) * 4;
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &flipped[size_t(y) * row]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+void Renderer::shutdown() {
+    for (GLuint p : {clothProgram_, litProgram_, groundProgram_, linesProgram_})
+        if (p) glDeleteProgram(p);
+    const GLuint buffers[] = {clothUvVbo_, clothDynamicVbo_, clothEbo_,  particleVbo_, structuralEbo_,
+                              bendEbo_,    pointsEbo_,       groundVbo_, sphereVbo_,   sphereEbo_};
+    glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
+    const GLuint arrays[] = {clothVao_, overlayVao_, groundVao_, sphereVao_};
+    glDeleteVertexArrays(GLsizei(std::size(arrays)), arrays);
+    if (texture_) glDeleteTextures(1, &texture_);
+    *this = Renderer{};
+}
+
+// ============================================================================================ [FRAME]
+
+void Renderer::draw(const World& world, const RenderOptions& o, const View& view, int fbWidth, int fbHeight) {
+    glViewport(0, 0, fbWidth, fbHeight);
+    glClearColor(o.sky[0], o.sky[1], o.sky[2], 1.f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE); // cloth is two-sided
+    glDisable(GL_BLEND);
+    if (world.settings.collision.ground) drawGround(world, o, view);
+    drawCloth(world, o, view);
+    drawBalls(world, o, view);
+    drawOverlays(world, o, view);
+    glBindVertexArray(0);
+}
+
+void Renderer::setLighting(GLuint program, const RenderOptions& o, const View& view) {
+    Vec3 l(o.lightDir[0], o.lightDir[1], o.lightDir[2]);
+    if (l.squaredNorm() < 1e-12f) l = Vec3::UnitY();
+    setVec3(program, "uLightDir", Vec3(l.normalized()));
+    setVec3(program, "uLightColor", o.lightColor);
+    setVec3(program, "uAmbient", o.ambient);
+    setVec3(program, "uCameraPos", view.camera.position());
+    setFloat(program, "uSpecular", o.specular);
+    setFloat(program, "uShininess", std::max(1.f, o.shininess));
+    setMat4(program, "uViewProj", view.viewProjection.data());
+}
+
+void Renderer::drawGround(const World& world, const RenderOptions& o, const View& view) {
+    glUseProgram(groundProgram_);
+    setLighting(groundProgram_, o, view);
+    const float extent = std::max(60.f, view.camera.distance * 6.f);
+    setFloat(groundProgram_, "uHeight", world.settings.collision.groundHeight);
+    glUniform2f(uniform(groundProgram_, "uCenter"), std::round(view.camera.target.x()), std::round(view.camera.target.z()));
+    setFloat(groundProgram_, "uExtent", extent);
+    setFloat(groundProgram_, "uFadeDistance", extent * 0.9f);
+    setVec3(groundProgram_, "uColor", o.ground);
+    setVec3(groundProgram_, "uSky", o.sky);
+    glBindVertexArray(groundVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+// ============================================================================================ [CLOTH]
+
+void Renderer::drawCloth(const World& world, const RenderOptions& o, const View& view) {
+    const Cloth& cloth = world.cloth;
+    if (cloth.triangles.empty()) return;
+    glBindVertexArray(clothVao_);
+    if (mesh_.stale(cloth)) {
+        // Topology changed (a tear, a rebuild): new render vertices, uvs and indices.
+        mesh_.rebuild(cloth);
+        glBindBuffer(GL_ARRAY_BUFFER, clothUvVbo_);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh_.uv.size() * sizeof(float)), mesh_.uv.data(), GL_STATIC_DRAW);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh_.indices.size() * sizeof(uint32_t)),
+                     mesh_.indices.data(), GL_STATIC_DRAW);
+        ++topologyUploads_;
+    }
+    computeParticleNormals(cloth, normals_);
+    if (o.strainColors) computeParticleStrain(cloth, strain_);
+    else strain_.clear();
+    fillDynamicVertices(mesh_, cloth, normals_, strain_, dynamic_);
+    glBindBuffer(GL_ARRAY_BUFFER, clothDynamicVbo_);
+    // Orphan and refill: the driver need not wait for the previous frame's draw.
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(dynamic_.size() * sizeof(float)), dynamic_.data(), GL_STREAM_DRAW);
+
+    glUseProgram(clothProgram_);
+    setLighting(clothProgram_, o, view);
+    setInt(clothProgram_, "uUseTexture", o.texture ? 1 : 0);
+    setInt(clothProgram_, "uFlat", o.flat ? 1 : 0);
+    setInt(clothProgram_, "uStrainColors", o.strainColors ? 1 : 0);
+    setFloat(clothProgram_, "uStrainMax", world.settings.tear.enabled ? world.settings.tear.threshold : 0.5f);
+    setVec3(clothProgram_, "uFrontTint", o.frontTint);
+    setVec3(clothProgram_, "uBackColor", o.backColor);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    setInt(clothProgram_, "uTexture", 0);
+    // Push the cloth slightly back so overlay lines on it win the depth test.
+    const bool overlays = o.structuralSprings || o.bendSprings;
+    if (overlays) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.f, 1.f);
+    }
+    glDrawElements(GL_TRIANGLES, GLsizei(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void Renderer::drawBalls(const World& world, const RenderOptions& o, const View& view) {
+    if (world.balls.empty()) return;
+    glUseProgram(litProgram_);
+    setLighting(litProgram_, o, view);
+    setVec3(litProgram_, "uColor", o.ballColor);
+    glBindVertexArray(sphereVao_);
+    for (const Ball& b : world.balls) {
+        Eigen::Affine3f model = Eigen::Translation3f(b.x) * Eigen::Scaling(b.radius);
+        setMat4(litProgram_, "uModel", model.matrix().data());
+        glDrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
+    }
+}
+
+// ========================================================================================= [OVERLAYS]
+
+void Renderer::drawOverlays(const World& world, const RenderOptions& o, const View& view) {
+    const Cloth& cloth = world.cloth;
+    if (!(o.structuralSprings || o.bendSprings || o.weakPoints || o.pinnedParticles) || cloth.particleCount() == 0)
+        return;
+    glBindVertexArray(overlayVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, particleVbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(cloth.particleCount() * sizeof(Vec3)), cloth.x.data(), GL_STREAM_DRAW);
+    if (overlayRevision_ != cloth.topologyRevision || overlayParticles_ != cloth.particleCount() ||
+        GLsizei(cloth.springs.size() * 2) != structuralCount_ || GLsizei(cloth.bends.size() * 2) != bendCount_) {
+        auto upload = [&](GLuint ebo, const std::vector<Spring>& springs) {
+            pointScratch_.clear();
+            for (const Spring& s : springs) pointScratch_.insert(pointScratch_.end(), {s.a, s.b});
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(pointScratch_.size() * sizeof(uint32_t)),
+                         pointScratch_.data(), GL_STATIC_DRAW);
+            return GLsizei(pointScratch_.size());
+        };
+        structuralCount_ = upload(structuralEbo_, cloth.springs);
+        bendCount_ = upload(bendEbo_, cloth.bends);
+        overlayRevision_ = cloth.topologyRevision;
+        overlayParticles_ = cloth.particleCount();
+    }
+    glUseProgram(linesProgram_);
+    setMat4(linesProgram_, "uViewProj", view.viewProjection.data());
+    setFloat(linesProgram_, "uPointSize", 1.f);
+    const GLint color = uniform(linesProgram_, "uColor");
+    if (o.bendSprings) {
+        glUniform4f(color, 0.15f, 0.45f, 0.95f, 1.f);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bendEbo_);
+        glDrawElements(GL_LINES, bendCount_, GL_UNSIGNED_INT, nullptr);
+    }
+    if (o.structuralSprings) {
+        glUniform4f(color, 0.08f, 0.08f, 0.1f, 1.f);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, structuralEbo_);
+        glDrawElements(GL_LINES, structuralCount_, GL_UNSIGNED_INT, nullptr);
+    }
+    // Points: pins change without a topology revision, so these lists are rebuilt each frame.
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    auto points = [&](uint8_t flag, float size, float r, float g, float b) {
+        pointScratch_.clear();
+        for (Index p = 0; p < cloth.particleCount(); ++p)
+            if (cloth.flags[p] & flag) pointScratch_.push_back(p);
+        if (pointScratch_.empty()) return;
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, pointsEbo_);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(pointScratch_.size() * sizeof(uint32_t)), pointScratch_.data(),
+                     GL_STREAM_DRAW);
+        setFloat(linesProgram_, "uPointSize", size);
+        glUniform4f(color, r, g, b, 1.f);
+        glDrawElements(GL_POINTS, GLsizei(pointScratch_.size()), GL_UNSIGNED_INT, nullptr);
+    };
+    if (o.weakPoints) points(kWeak, 5.f, 1.f, 0.55f, 0.05f);
+    if (o.pinnedParticles) points(kPinned, 6.f, 0.55f, 0.05f, 0.1f);
+    glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+} // namespace clothtear::app

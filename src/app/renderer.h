@@ -1,0 +1,55 @@
+// The renderer: owns every GPU object and draws the world (sky, ground, cloth, balls, debug overlays).
+// It reads the core's arrays; the core knows nothing of it. Uploads follow what changed: positions and
+// normals every frame, index buffers only when cloth.topologyRevision moved.
+#pragma once
+#include "app_state.h"
+#include "fabric_texture.h"
+#include "render_mesh.h"
+
+#include <GL/glew.h>
+#include <string>
+#include <vector>
+
+namespace clothtear::app {
+
+class Renderer {
+public:
+    // Compiles the shaders and creates the buffers. Returns "" or what failed.
+    std::string init();
+    void shutdown();
+    // Replaces the cloth texture (mipmapped, repeat).
+    void setTexture(const Image& image);
+    // Draws one frame into the current framebuffer of fbWidth x fbHeight pixels.
+    void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight);
+    size_t topologyUploads() const { return topologyUploads_; }
+
+private:
+    void drawGround(const World& world, const RenderOptions& o, const View& view);
+    void drawCloth(const World& world, const RenderOptions& o, const View& view);
+    void drawBalls(const World& world, const RenderOptions& o, const View& view);
+    void drawOverlays(const World& world, const RenderOptions& o, const View& view);
+    void setLighting(GLuint program, const RenderOptions& o, const View& view);
+    void buildSphere();
+
+    GLuint clothProgram_ = 0, litProgram_ = 0, groundProgram_ = 0, linesProgram_ = 0;
+    // cloth
+    GLuint clothVao_ = 0, clothUvVbo_ = 0, clothDynamicVbo_ = 0, clothEbo_ = 0;
+    GLuint texture_ = 0;
+    RenderMesh mesh_;
+    std::vector<Vec3> normals_;
+    std::vector<float> strain_;
+    std::vector<float> dynamic_;
+    size_t topologyUploads_ = 0;
+    // overlays: particle positions + line/point index buffers
+    GLuint overlayVao_ = 0, particleVbo_ = 0, structuralEbo_ = 0, bendEbo_ = 0, pointsEbo_ = 0;
+    uint64_t overlayRevision_ = ~uint64_t(0);
+    size_t overlayParticles_ = 0;
+    GLsizei structuralCount_ = 0, bendCount_ = 0;
+    std::vector<uint32_t> pointScratch_;
+    // ground and balls
+    GLuint groundVao_ = 0, groundVbo_ = 0;
+    GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
+    GLsizei sphereIndexCount_ = 0;
+};
+
+} // namespace clothtear::app

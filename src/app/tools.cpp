@@ -1,0 +1,131 @@
+// Tool actions on the world.
+#include "tools.h"
+
+#include "picking.h"
+
+#include <algorithm>
+
+namespace clothtear::app {
+
+const char* toolName(Tool tool) {
+    static const char* names[] = {"Drag", "Wind", "Impulse", "Ball", "Pin"};
+    return names[int(tool)];
+}
+
+View makeView(const OrbitCamera& camera, float width, float height) {
+    View v;
+    v.camera = camera;
+    v.width = std::max(width, 1.f);
+    v.height = std::max(height, 1.f);
+    v.viewProjection = camera.viewProjection(v.width / v.height);
+    return v;
+}
+
+// ============================================================================================ drag
+
+bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& cursor) {
+    const TriangleHit hit = pickTriangle(world.cloth, view.rayAt(cursor));
+    const Index p = nearestCorner(world.cloth, hit);
+    if (p == kNone) return false;
+    drag.particle = p;
+    drag.wasPinned = world.cloth.pinned(p);
+    drag.planePoint = hit.point;
+    drag.planeNormal = -view.camera.forward();
+    drag.grabOffset = world.cloth.x[p] - hit.point;
+    drag.target = world.cloth.x[p];
+    // Held by the tool: forces no longer move it, the driver does.
+    world.cloth.setPinned(p, true);
+    return true;
+}
+
+void moveDrag(DragState& drag, const View& view, const Vec2& cursor) {
+    if (!drag.active()) return;
+    Vec3 onPlane;
+    if (rayPlane(view.rayAt(cursor), drag.planePoint, drag.planeNormal, onPlane)) drag.target = onPlane + drag.grabOffset;
+}
+
+void releaseDrag(World& world, DragState& drag, bool keepPinned) {
+    if (!drag.active()) return;
+    if (drag.particle < world.cloth.particleCount()) world.cloth.setPinned(drag.particle, keepPinned || drag.wasPinned);
+    drag = DragState{};
+}
+
+bool dragBeforeStep(World& world, const DragState& drag, float maxSpeed) {
+    if (!drag.active() || drag.particle >= world.cloth.particleCount()) return false;
+    Driver d;
+    d.particles = {drag.particle};
+    Vec3 v = (drag.target - world.cloth.x[drag.particle]) / world.settings.time.frameDt;
+    const float speed = v.norm();
+    if (speed > maxSpeed) v *= maxSpeed / speed;
+    d.velocity = v;
+    world.drivers.push_back(std::move(d));
+    return true;
+}
+
+void dragAfterStep(World& world, bool pushed) {
+    if (pushed && !world.drivers.empty()) world.drivers.pop_back();
+}
+
+// ==================================================================================== wind, impulse
+
+void addVelocity(World& world, Index p, const Vec3& dv) {
+    world.cloth.v[p] += dv;
+    // Verlet keeps velocity implicitly in x - xPrev (as World::applyImpulse does).
+    world.cloth.xPrev[p] -= dv * (world.settings.time.frameDt / float(std::max(1, world.settings.time.substeps)));
+}
+
+WindSource windSourceAt(const View& view, const Vec2& cursor) {
+    WindSource s;
+    s.view = view;
+    s.center = cursor;
+    s.direction = view.rayAt(cursor).dir;
+    return s;
+}
+
+int applyWind(World& world, const WindSource& source, float radiusPx, float pressure, float seconds) {
+    Cloth& c = world.cloth;
+    const auto hits = particlesInScreenRadius(c, source.view.viewProjection, source.view.width, source.view.height,
+                                              source.center, radiusPx);
+    for (const WeightedParticle& h : hits) {
+        if (c.invMass[h.particle] == 0.f) continue;
+        // a = F / m = pressure * areaShare * invMass
+        const float a = pressure * float(c.areaShare[h.particle]) * c.invMass[h.particle] * h.weight;
+        addVelocity(world, h.particle, source.direction * (a * seconds));
+    }
+    return int(hits.size());
+}
+
+int applyScreenImpulse(World& world, const View& view, const Vec2& cursor, float radiusPx, float dv) {
+    const Vec3 dir = view.rayAt(cursor).dir;
+    const auto hits = particlesInScreenRadius(world.cloth, view.viewProjection, view.width, view.height, cursor, radiusPx);
+    int n = 0;
+    for (const WeightedParticle& h : hits) {
+        if (world.cloth.invMass[h.particle] == 0.f) continue;
+        addVelocity(world, h.particle, dir * (dv * h.weight));
+        ++n;
+    }
+    return n;
+}
+
+// ====================================================================================== ball, pin
+
+Ball throwBall(const View& view, const Vec2& cursor, const SceneParams& params) {
+    const Ray r = view.rayAt(cursor);
+    Ball b;
+    b.radius = params.ballRadius;
+    b.mass = params.ballMass;
+    // Start just in front of the eye so the ball does not appear inside the near plane.
+    b.x = r.origin + r.dir * (b.radius + 0.2f);
+    b.v = r.dir * params.ballSpeed;
+    return b;
+}
+
+Index togglePinAt(World& world, const View& view, const Vec2& cursor) {
+    const Index p = nearestCorner(world.cloth, pickTriangle(world.cloth, view.rayAt(cursor)));
+    if (p == kNone) return kNone;
+    world.cloth.setPinned(p, !world.cloth.pinned(p));
+    if (world.cloth.pinned(p)) world.cloth.v[p].setZero();
+    return p;
+}
+
+} // namespace clothtear::app

@@ -1,0 +1,76 @@
+// The interaction tools (Keserica ch. 5): drag, wind, impulse, ball, pin. They act on the World through
+// its public state (positions, velocities, pins, drivers, balls); no GL here, so they are unit-testable.
+//
+// Handles: a tool that holds a particle keeps its index, which stays valid because tearing only
+// appends particles (cloth.h); a rebuild of the cloth cancels the hold (App::rebuildWorld).
+#pragma once
+#include "camera.h"
+#include "clothtear/world.h"
+
+#include <vector>
+
+namespace clothtear::app {
+
+enum class Tool : int { Drag = 0, Wind, Impulse, Ball, Pin, Count };
+const char* toolName(Tool tool);
+
+struct ToolSettings {
+    float radiusPx = 70.f;     // px, [5, 400]     screen radius of the wind and impulse tools
+    float windPressure = 6.f;  // Pa = N/m^2, [0, 2000] wind tool force per unit cloth area at the centre
+    float impulse = 3.f;       // m/s, [0, 50]     impulse tool velocity change at the centre
+    bool windFixed = false;    //                  wind source fixed in place; it blows until unfixed
+    float maxDragSpeed = 40.f; // m/s, [1, 500]    how fast the grabbed particle may chase the cursor
+};
+
+// What the tools need to know about the view: camera and window size (window coordinates).
+struct View {
+    OrbitCamera camera;
+    Mat4 viewProjection = Mat4::Identity();
+    float width = 1.f, height = 1.f;
+    Ray rayAt(const Vec2& cursor) const { return rayThroughPixel(camera, cursor.x(), cursor.y(), width, height); }
+};
+View makeView(const OrbitCamera& camera, float width, float height);
+
+// ---- drag ------------------------------------------------------------------------------------------
+struct DragState {
+    Index particle = kNone;            // the grabbed particle
+    bool wasPinned = false;            // restored on release
+    Vec3 planePoint = Vec3::Zero();    // the camera-facing plane through the grab point
+    Vec3 planeNormal = Vec3::UnitZ();
+    Vec3 grabOffset = Vec3::Zero();    // particle minus hit point at grab time
+    Vec3 target = Vec3::Zero();        // where the particle should be at the end of the next frame
+    bool active() const { return particle != kNone; }
+};
+// Picks the triangle under the cursor and grabs its corner nearest to the hit. False when nothing is hit.
+bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& cursor);
+void moveDrag(DragState& drag, const View& view, const Vec2& cursor);
+// Lets go; keepPinned leaves the particle pinned where it is (the pin key).
+void releaseDrag(World& world, DragState& drag, bool keepPinned);
+// Around each world.step(): a driver moves the particle to its target over one frame.
+bool dragBeforeStep(World& world, const DragState& drag, float maxSpeed);
+void dragAfterStep(World& world, bool pushed);
+
+// ---- wind and impulse ------------------------------------------------------------------------------
+// The source of the wind tool: where on screen it blows and along which direction. Fixing the source
+// keeps the view it was set from, so it stays in place while the camera moves.
+struct WindSource {
+    View view;
+    Vec2 center = Vec2::Zero();
+    Vec3 direction = Vec3(0, 0, -1); // unit, along the view ray through the centre
+};
+WindSource windSourceAt(const View& view, const Vec2& cursor);
+// Keserica 5.2.2: force = pressure * area share * falloff along the direction, for `seconds`.
+// Returns the number of particles affected.
+int applyWind(World& world, const WindSource& source, float radiusPx, float pressure, float seconds);
+// Keserica 5.2.1: one-shot velocity change along the view ray; negative dv pulls towards the camera.
+int applyScreenImpulse(World& world, const View& view, const Vec2& cursor, float radiusPx, float dv);
+// Adds dv to a particle's velocity, keeping Verlet's implicit velocity (x - xPrev) consistent.
+void addVelocity(World& world, Index p, const Vec3& dv);
+
+// ---- ball and pin ------------------------------------------------------------------------------------
+// A ball leaving the camera through the cursor with the radius, speed and mass of settings.scene.
+Ball throwBall(const View& view, const Vec2& cursor, const SceneParams& params);
+// Toggles the pin of the particle under the cursor; returns it, or kNone when nothing is hit.
+Index togglePinAt(World& world, const View& view, const Vec2& cursor);
+
+} // namespace clothtear::app
