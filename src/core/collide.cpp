@@ -119,37 +119,46 @@ void resolveContact(Cloth& cloth, const Triangle& tri, const Vec3& bary, Ball& b
 }
 
 void collideBall(Cloth& cloth, Ball& ball, const Vec3& c0, const CollisionSettings& s, float dt) {
-    const Vec3 c1 = ball.x;
     const float R = ball.radius + s.thickness;
-    const Vec3 lo = c0.cwiseMin(c1).array() - R, hi = c0.cwiseMax(c1).array() + R;
-    for (const Triangle& tri : cloth.triangles) {
-        const Vec3& a = cloth.x[tri.p[0]];
-        const Vec3& b = cloth.x[tri.p[1]];
-        const Vec3& c = cloth.x[tri.p[2]];
-        // Broad phase: triangle box against the swept ball box.
-        const Vec3 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
-        if ((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any()) continue;
-        Vec3 bary;
-        const Vec3 q = closestPointOnTriangle(c1, a, b, c, bary);
-        Vec3 nt = (b - a).cross(c - a);
-        const float ntLen = nt.norm();
-        if (!(ntLen > 0.f)) continue;
-        nt /= ntLen;
-        const float side0 = nt.dot(c0 - a) >= 0.f ? 1.f : -1.f;
-        Vec3 n;
-        float pen;
-        if (segmentCrossesTriangle(c0, c1, a, b, c)) {
-            // Tunnelled this sub-step: the cloth belongs in front of the ball.
-            n = -side0 * nt;
-            pen = R - (q - c1).dot(n);
-        } else {
-            const Vec3 d = q - c1;
-            const float dist = d.norm();
-            if (dist >= R) continue;
-            n = dist > 1e-6f * R ? Vec3(d / dist) : Vec3(-side0 * nt);
-            pen = R - dist;
+    const Vec3 lo = c0.cwiseMin(ball.x).array() - R, hi = c0.cwiseMax(ball.x).array() + R;
+    // Pass 0 resolves only the triangles the ball went through, so that it is back on its side
+    // before pass 1 judges the contacts with their neighbours from the ball centre (a centre lying
+    // in the cloth would otherwise be shoved sideways by them, past the triangle it crossed).
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const Triangle& tri : cloth.triangles) {
+            // Where the ball is now: a pinned triangle met earlier may have pushed it back, and a
+            // stale end point would push it back once more for every triangle it crossed.
+            const Vec3 c1 = ball.x;
+            const Vec3& a = cloth.x[tri.p[0]];
+            const Vec3& b = cloth.x[tri.p[1]];
+            const Vec3& c = cloth.x[tri.p[2]];
+            // Broad phase: triangle box against the swept ball box.
+            const Vec3 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
+            if ((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any()) continue;
+            Vec3 bary;
+            const Vec3 q = closestPointOnTriangle(c1, a, b, c, bary);
+            Vec3 nt = (b - a).cross(c - a);
+            const float ntLen = nt.norm();
+            if (!(ntLen > 0.f)) continue;
+            nt /= ntLen;
+            const float side0 = nt.dot(c0 - a) >= 0.f ? 1.f : -1.f;
+            Vec3 n;
+            float pen;
+            const bool crossed = segmentCrossesTriangle(c0, c1, a, b, c);
+            if (pass == 0 && !crossed) continue;
+            if (crossed) {
+                // Tunnelled this sub-step: the cloth belongs in front of the ball.
+                n = -side0 * nt;
+                pen = R - (q - c1).dot(n);
+            } else {
+                const Vec3 d = q - c1;
+                const float dist = d.norm();
+                if (dist >= R) continue;
+                n = dist > 1e-6f * R ? Vec3(d / dist) : Vec3(-side0 * nt);
+                pen = R - dist;
+            }
+            if (pen > 0.f) resolveContact(cloth, tri, bary, ball, n, pen, s.friction, dt);
         }
-        if (pen > 0.f) resolveContact(cloth, tri, bary, ball, n, pen, s.friction, dt);
     }
 }
 

@@ -1,0 +1,149 @@
+// The `clothtear` binary as a user runs it: bad input exits with status 2 and one clear message,
+// and a headless run writes the JSON report with the documented fields.
+#include "clothtear/world.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// A scratch directory of this test process, removed at the end.
+class CliTest : public ::testing::Test {
+  protected:
+    fs::path dir;
+    void SetUp() override {
+        ASSERT_TRUE(fs::exists(CLOTHTEAR_BINARY)) << "build the clothtear target first: " << CLOTHTEAR_BINARY;
+        dir = fs::temp_directory_path() / ("clothtear_cli_" + std::to_string(::getpid()) + "_" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir);
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+    // Runs the binary with `args` (already quoted where needed), capturing stdout and stderr.
+    RunResult run(const std::string& args) {
+        const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+        const std::string cmd = std::string("'") + CLOTHTEAR_BINARY + "' " + args + " >'" + out.string() +
+                                "' 2>'" + err.string() + "'";
+        const int raw = std::system(cmd.c_str());
+        RunResult r;
+        r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+        r.out = slurp(out);
+        r.err = slurp(err);
+        return r;
+    }
+};
+
+void expectRefused(const RunResult& r, const std::string& args, std::initializer_list<const char*> mentions) {
+    EXPECT_EQ(r.status, 2) << args << "\nstderr: " << r.err;
+    for (const char* m : mentions)
+        EXPECT_NE(r.err.find(m), std::string::npos) << args << ": '" << m << "' not in: " << r.err;
+    // One message, on stderr, starting with the program name.
+    EXPECT_EQ(r.err.rfind("clothtear: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST_F(CliTest, UnknownParameterIsRefused) {
+    const std::string args = "--headless --seconds 0.1 --set nope=1";
+    expectRefused(run(args), args, {"nope", "unknown parameter"});
+}
+
+TEST_F(CliTest, OutOfRangeValueIsRefused) {
+    const std::string args = "--headless --seconds 0.1 --set material.density=-1";
+    expectRefused(run(args), args, {"material.density", "outside the valid range"});
+}
+
+TEST_F(CliTest, NonNumericValueIsRefused) {
+    const std::string args = "--headless --seconds 0.1 --set material.density=abc";
+    expectRefused(run(args), args, {"material.density", "not a number"});
+}
+
+TEST_F(CliTest, MalformedAssignmentIsRefused) {
+    const std::string args = "--headless --seconds 0.1 --set material.density";
+    expectRefused(run(args), args, {"material.density", "key=value"});
+}
+
+TEST_F(CliTest, UnknownSceneIsRefused) {
+    const std::string args = "--headless --seconds 0.1 --scene nope";
+    expectRefused(run(args), args, {"unknown scene 'nope'", "curtain"});
+}
+
+TEST_F(CliTest, HeadlessRunWritesTheJsonReport) {
+    const fs::path report = dir / "report.json";
+    const RunResult r = run("--headless --scene curtain --seconds 0.5 --json '" + report.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_TRUE(fs::exists(report));
+    const nlohmann::json j = nlohmann::json::parse(slurp(report));
+    for (const char* field :
+         {"scene", "seconds", "steps", "substeps", "dt", "particles", "springs", "bend_springs", "triangles",
+          "total_mass", "rest_area", "max_strain", "finite", "ms_per_step", "phases"})
+        EXPECT_TRUE(j.contains(field)) << "report lacks '" << field << "'";
+
+    // The curtain defaults: 40 x 40 particles on 2 m x 2 m, 0.2 kg/m^2, 10 sub-steps at 60 Hz.
+    const int n = 40;
+    const long triangles = 2L * (n - 1) * (n - 1);
+    const long springs = long(n) * n + triangles - 1; // Euler for a disc: V - E + F = 1
+    const long border = 4L * (n - 1);
+    EXPECT_EQ(j["scene"], "curtain");
+    EXPECT_NEAR(j["seconds"].get<double>(), 0.5, 1e-4);
+    EXPECT_EQ(j["steps"], 30);
+    EXPECT_EQ(j["substeps"], 10);
+    EXPECT_NEAR(j["dt"].get<double>(), 1.0 / 600.0, 1e-9);
+    EXPECT_EQ(j["particles"], n * n);
+    EXPECT_EQ(j["triangles"], triangles);
+    EXPECT_EQ(j["springs"], springs);
+    EXPECT_EQ(j["bend_springs"], springs - border);
+    EXPECT_NEAR(j["total_mass"].get<double>(), 0.2 * 4.0, 1e-6);
+    EXPECT_NEAR(j["rest_area"].get<double>(), 4.0, 1e-9);
+    EXPECT_GE(j["max_strain"].get<double>(), 0.0);
+    EXPECT_LT(j["max_strain"].get<double>(), 0.2); // the limit holds a hanging curtain near 10%
+    EXPECT_EQ(j["finite"], true);
+    EXPECT_GE(j["ms_per_step"].get<double>(), 0.0);
+
+    const nlohmann::json& phases = j["phases"];
+    ASSERT_TRUE(phases.is_object());
+    for (int p = 0; p < int(clothtear::Phase::Count); ++p) {
+        const char* name = clothtear::phaseName(clothtear::Phase(p));
+        ASSERT_TRUE(phases.contains(name)) << name;
+        EXPECT_TRUE(phases[name].contains("runs")) << name;
+        EXPECT_TRUE(phases[name].contains("ms_per_step")) << name;
+    }
+    EXPECT_EQ(phases["integrate"]["runs"], 300);
+    EXPECT_EQ(phases["collide"]["runs"], 300); // the ground is on
+    EXPECT_EQ(phases["wind"]["runs"], 0);      // no wind in the curtain scene
+}
+
+TEST_F(CliTest, JsonToStdout) {
+    const RunResult r = run("--headless --scene corners --seconds 0.1 --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["scene"], "corners");
+    EXPECT_EQ(j["steps"], 6);
+}
+
+} // namespace
