@@ -228,19 +228,24 @@ void App::frame(bool last) {
     const View view = currentView();
     drawToolHud(state_, world_, view, input_.mouseX, input_.mouseY, uiMouse);
     ImGui::Render();
+    const double drawStart = glfwGetTime();
     int fbWidth = 0, fbHeight = 0;
     glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
     renderer_.draw(world_, state_.render, view, fbWidth, fbHeight);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const double drawEnd = glfwGetTime();
     if (last && !options_.screenshot.empty())
         if (std::string err = writeScreenshot(options_.screenshot); !err.empty()) std::cerr << "clothtear: " << err << "\n";
     if (state_.requestScreenshot) {
         state_.requestScreenshot = false;
         const std::string name = "clothtear-" + std::to_string(state_.frame) + ".png";
         const std::string err = writeScreenshot(name);
-        state_.message = err.empty() ? "Saved " + name : err;
+        state_.say(err.empty() ? "Saved " + name : err);
     }
     glfwSwapBuffers(window_);
+    const double swapEnd = glfwGetTime();
+    state_.stats.drawMs = 0.9 * state_.stats.drawMs + 0.1 * 1000.0 * (drawEnd - drawStart);
+    state_.stats.swapMs = 0.9 * state_.stats.swapMs + 0.1 * 1000.0 * (swapEnd - drawEnd);
     input_.endFrame();
     updateStats(now);
     state_.frame++;
@@ -253,7 +258,7 @@ void App::serveRequests() {
         const auto scenes = allScenes();
         if (state_.requestScene < int(scenes.size())) {
             const std::string err = loadScene(scenes[state_.requestScene].name, false);
-            state_.message = err.empty() ? std::string("Scene: ") + scenes[state_.requestScene].description : err;
+            state_.say(err.empty() ? std::string("Scene: ") + scenes[state_.requestScene].description : err);
             if (err.empty()) state_.requestResetView = true;
         }
         state_.requestScene = -1;
@@ -261,7 +266,7 @@ void App::serveRequests() {
     if (state_.requestDefaults) {
         state_.requestDefaults = false;
         const std::string err = loadScene(state_.scene, false);
-        state_.message = err.empty() ? "Parameters back to the defaults of " + state_.scene : err;
+        state_.say(err.empty() ? "Parameters back to the defaults of " + state_.scene : err);
     }
     if (state_.requestReset) {
         state_.requestReset = false;

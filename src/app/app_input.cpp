@@ -61,8 +61,12 @@ void App::onRealEvent(InputEvent e) {
 }
 
 void App::deliverScriptEvents() {
-    while (scriptPos_ < script_.events.size() && script_.events[scriptPos_].frame <= state_.frame)
-        input_.apply(script_.events[scriptPos_++]);
+    while (scriptPos_ < script_.events.size() && script_.events[scriptPos_].frame <= state_.frame) {
+        const InputEvent& e = script_.events[scriptPos_++];
+        if (e.kind == InputKind::End) continue;
+        input_.apply(e);
+        if (recording_) recorded_.events.push_back(e); // --script with --record: a copy of what was replayed
+    }
 }
 
 // ============================================================================================ [IMGUI]
@@ -111,7 +115,7 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
             if (e.code == 0) {
                 switch (state_.tool) {
                 case Tool::Drag:
-                    if (!beginDrag(world_, state_.drag, view, cursor)) state_.message = "Drag: no cloth under the cursor";
+                    if (!beginDrag(world_, state_.drag, view, cursor)) state_.say("Drag: no cloth under the cursor");
                     break;
                 case Tool::Wind:
                     if (!state_.tools.windFixed) state_.windBlowing = true, state_.windSource = windSourceAt(view, cursor);
@@ -119,12 +123,17 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
                 case Tool::Impulse:
                     applyScreenImpulse(world_, view, cursor, state_.tools.radiusPx, state_.tools.impulse);
                     break;
-                case Tool::Ball:
-                    world_.balls.push_back(throwBall(view, cursor, world_.settings.scene));
+                case Tool::Ball: {
+                    const Throw t = throwBall(world_, view, cursor);
+                    world_.balls.push_back(t.ball);
+                    if (!t.aimed && t.neededSpeed > 0.f)
+                        state_.say("Ball: too slow to reach the cursor from here (needs " +
+                                         std::to_string(int(std::ceil(t.neededSpeed))) + " m/s: raise ball.speed)");
                     state_.ballFlags.resize(world_.balls.size(), 0);
                     state_.ballFlags.back() = kBallThrown;
                     state_.ballsThrown++;
                     break;
+                }
                 case Tool::Pin:
                     togglePinAt(world_, view, cursor);
                     break;
@@ -207,7 +216,7 @@ void App::handleKey(int key, bool uiKeyboard) {
     case keys::X:
         if (state_.drag.active()) {
             releaseDrag(world_, state_.drag, true);
-            state_.message = "Pinned the grabbed particle";
+            state_.say("Pinned the grabbed particle");
         }
         break;
     case keys::L:

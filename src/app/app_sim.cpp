@@ -27,14 +27,14 @@ void App::rebuildWorld() {
     state_.drag = DragState{};
     state_.windBlowing = false;
     if (std::string err = world_.rebuild(); !err.empty()) {
-        state_.message = "Rebuild failed: " + err;
+        state_.say("Rebuild failed: " + err);
         return;
     }
     if (const SceneDef* scene = findScene(state_.scene)) scene->populate(world_);
     state_.ballFlags.assign(world_.balls.size(), 0);
     state_.clock.reset();
     state_.stats.sampleStart = -1;
-    state_.message.clear();
+    state_.say({});
 }
 
 void App::simulate(double realSeconds) {

@@ -39,6 +39,8 @@ struct Stats {
     double simFps = 0;       // simulated frames per second (60 = real time at the default frame_dt)
     double msPerStep = 0;    // wall ms per world.step()
     std::array<double, int(Phase::Count)> phaseMs{}; // ms per step in each phase
+    double drawMs = 0;       // CPU ms to issue the frame's GL and ImGui draws (smoothed)
+    double swapMs = 0;       // ms in glfwSwapBuffers (with a software renderer: most of the raster work)
     // bookkeeping for the averages
     double sampleStart = -1; // s (glfwGetTime)
     int frames = 0;
@@ -74,7 +76,8 @@ struct AppState {
     std::array<char, 512> texturePath{}; // the path field of the texture loader
     std::string textureName;       // what is loaded now
     std::string textureError;      // shown in red under the loader; the current texture stays
-    std::string message;           // last status line (scene errors, screenshots)
+    std::string message;           // status line shown over the view for a few seconds (errors, screenshots)
+    uint64_t messageFrame = 0;     // frame the message was set in
     // ---- requests from the panel and hotkeys, served by the main loop once per frame
     int requestScene = -1;         // index into allScenes()
     bool requestReset = false;     // rebuild the cloth from the current settings
@@ -90,6 +93,11 @@ struct AppState {
     int ballsHitCloth = 0;         // thrown balls that touched the cloth
     std::vector<uint8_t> ballFlags; // per world.balls entry: kBallThrown | kBallTouched
     Stats stats;
+
+    void say(std::string text) {
+        message = std::move(text);
+        messageFrame = frame;
+    }
 };
 
 } // namespace clothtear::app

@@ -173,10 +173,6 @@ void drawControlPanel(AppState& st, World& world) {
             ImGui::SetTooltip("Sliders span the hard ranges: push the simulation past its stable range on purpose.");
         if (parameterGroups(world.settings, st.allowUnsafe)) st.requestReset = true;
     }
-    if (!st.message.empty()) {
-        ImGui::Separator();
-        ImGui::TextWrapped("%s", st.message.c_str());
-    }
     ImGui::PopItemWidth();
     ImGui::End();
 }
@@ -200,6 +196,7 @@ void drawStatsPane(AppState& st, const World& world) {
         ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "slower than real time (%.0f%%)",
                            100.0 * s.simFps * world.settings.time.frameDt);
     ImGui::Text("step %.2f ms  (%d sub-steps)", s.msPerStep, world.settings.time.substeps);
+    ImGui::Text("draw %.1f ms   swap %.1f ms", s.drawMs, s.swapMs);
     if (ImGui::BeginTable("phases", 2, ImGuiTableFlags_SizingStretchProp)) {
         for (int p = 0; p < int(Phase::Count); ++p) {
             ImGui::TableNextColumn();
@@ -252,6 +249,15 @@ void drawHelpOverlay(AppState& st) {
 
 void drawToolHud(const AppState& st, const World& world, const View& view, float mx, float my, bool overUi) {
     ImDrawList* dl = ImGui::GetForegroundDrawList();
+    // Status line: the last message, for about five seconds, at the bottom of the view.
+    if (!st.message.empty() && st.frame - st.messageFrame < 300) {
+        const ImVec2 size = ImGui::CalcTextSize(st.message.c_str());
+        const float left = st.showPanel ? kPanelWidth : 0.f;
+        const ImVec2 pos(left + 0.5f * (view.width - left - size.x), view.height - size.y - 14.f);
+        dl->AddRectFilled(ImVec2(pos.x - 8.f, pos.y - 4.f), ImVec2(pos.x + size.x + 8.f, pos.y + size.y + 4.f),
+                          IM_COL32(20, 20, 28, 200), 4.f);
+        dl->AddText(pos, IM_COL32(255, 235, 180, 255), st.message.c_str());
+    }
     const ImU32 wind = IM_COL32(90, 170, 255, 200), impulse = IM_COL32(255, 190, 60, 200);
     if (!overUi && (st.tool == Tool::Wind || st.tool == Tool::Impulse))
         dl->AddCircle(ImVec2(mx, my), st.tools.radiusPx, st.tool == Tool::Wind ? wind : impulse, 48, 1.5f);

@@ -4,6 +4,7 @@
 #include "picking.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace clothtear::app {
 
@@ -109,15 +110,52 @@ int applyScreenImpulse(World& world, const View& view, const Vec2& cursor, float
 
 // ====================================================================================== ball, pin
 
-Ball throwBall(const View& view, const Vec2& cursor, const SceneParams& params) {
+bool ballisticVelocity(const Vec3& from, const Vec3& to, const Vec3& g, float speed, Vec3& velocity, float& minSpeed) {
+    const Vec3 d = to - from;
+    const double gg = g.squaredNorm(), dg = d.dot(g), dd = d.squaredNorm(), s2 = double(speed) * speed;
+    minSpeed = float(std::sqrt(std::max(0.0, std::sqrt(gg * dd) - dg)));
+    if (dd < 1e-12) return false;
+    if (gg < 1e-12) {
+        velocity = d.normalized() * speed;
+        return speed > 0.f;
+    }
+    const double a = 0.25 * gg, b = -(dg + s2), c = dd;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return false;
+    const double u = (-b - std::sqrt(disc)) / (2.0 * a); // the smaller t^2: the flatter arc
+    if (!(u > 0.0)) return false;
+    const float t = float(std::sqrt(u));
+    velocity = d / t - 0.5f * g * t;
+    return true;
+}
+
+Throw throwBall(const World& world, const View& view, const Vec2& cursor) {
+    const SceneParams& params = world.settings.scene;
     const Ray r = view.rayAt(cursor);
-    Ball b;
+    Throw out;
+    Ball& b = out.ball;
     b.radius = params.ballRadius;
     b.mass = params.ballMass;
     // Start just in front of the eye so the ball does not appear inside the near plane.
     b.x = r.origin + r.dir * (b.radius + 0.2f);
     b.v = r.dir * params.ballSpeed;
-    return b;
+    // The point under the cursor: the cloth, else the ground.
+    Vec3 target;
+    bool haveTarget = false;
+    if (const TriangleHit hit = pickTriangle(world.cloth, r); hit.hit()) {
+        target = hit.point;
+        haveTarget = true;
+    } else if (world.settings.collision.ground) {
+        const float h = world.settings.collision.groundHeight + b.radius;
+        haveTarget = rayPlane(r, Vec3(0.f, h, 0.f), Vec3::UnitY(), target);
+    }
+    if (haveTarget) {
+        const Vec3 g(world.settings.gravity.x, world.settings.gravity.y, world.settings.gravity.z);
+        Vec3 v;
+        out.aimed = ballisticVelocity(b.x, target, g, params.ballSpeed, v, out.neededSpeed);
+        if (out.aimed) b.v = v;
+    }
+    return out;
 }
 
 Index togglePinAt(World& world, const View& view, const Vec2& cursor) {

@@ -68,8 +68,21 @@ int applyScreenImpulse(World& world, const View& view, const Vec2& cursor, float
 void addVelocity(World& world, Index p, const Vec3& dv);
 
 // ---- ball and pin ------------------------------------------------------------------------------------
-// A ball leaving the camera through the cursor with the radius, speed and mass of settings.scene.
-Ball throwBall(const View& view, const Vec2& cursor, const SceneParams& params);
+// A ball leaving the camera towards the cursor with the radius, speed and mass of settings.scene.
+// When the cursor is over the cloth (or the ground) and that point is within reach at this speed, the
+// ball is launched on the flat ballistic arc that passes through it; otherwise straight along the ray.
+struct Throw {
+    Ball ball;
+    bool aimed = false;        // on an arc through the point under the cursor
+    float neededSpeed = 0.f;   // m/s, the slowest throw that reaches that point (0: nothing under the cursor)
+};
+Throw throwBall(const World& world, const View& view, const Vec2& cursor);
+
+// Launch velocity of speed `speed` from `from` that reaches `to` under constant acceleration `g`, on the
+// faster (flatter) of the two arcs. Solves |d - g t^2 / 2| = s t for t, a quadratic in t^2:
+//   (|g|^2 / 4) t^4 - (d.g + s^2) t^2 + |d|^2 = 0,  then v = d / t - g t / 2.
+// False when out of reach; minSpeed = sqrt(|g||d| - d.g) is the slowest throw that reaches it.
+bool ballisticVelocity(const Vec3& from, const Vec3& to, const Vec3& g, float speed, Vec3& velocity, float& minSpeed);
 // Toggles the pin of the particle under the cursor; returns it, or kNone when nothing is hit.
 Index togglePinAt(World& world, const View& view, const Vec2& cursor);
 

@@ -1,0 +1,180 @@
+// The tools acting on a world, without a window: drag tears, balls hit, wind and impulse push, pins toggle.
+#include "sim_clock.h"
+#include "tools.h"
+
+#include "clothtear/scenes.h"
+
+#include <gtest/gtest.h>
+
+using namespace clothtear;
+using namespace clothtear::app;
+
+namespace {
+
+View frontView() {
+    OrbitCamera cam;
+    cam.target = Vec3(0, 0, 0);
+    cam.yaw = 0.f;
+    cam.pitch = 0.f;
+    cam.distance = 4.f;
+    return makeView(cam, 1280.f, 720.f);
+}
+
+Vec2 pixelOf(const View& v, const Vec3& p) {
+    Vec2 w;
+    EXPECT_TRUE(projectToWindow(v.viewProjection, p, v.width, v.height, w));
+    return w;
+}
+
+} // namespace
+
+TEST(AppTools, DragFollowsTheCursorAndPullingHardTears) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain"), "");
+    const View view = frontView();
+    DragState drag;
+    ASSERT_TRUE(beginDrag(w, drag, view, pixelOf(view, Vec3(0.f, -0.5f, 0.f))));
+    const Index p = drag.particle;
+    EXPECT_TRUE(w.cloth.pinned(p)); // held by the tool
+    const size_t driversBefore = w.drivers.size();
+    // Pull it 1.5 m sideways over half a second.
+    for (int f = 1; f <= 60; ++f) {
+        moveDrag(drag, view, pixelOf(view, Vec3(std::min(1.5f, 0.05f * f), -0.5f, 0.f)));
+        const bool pushed = dragBeforeStep(w, drag, 40.f);
+        w.step();
+        dragAfterStep(w, pushed);
+        EXPECT_EQ(w.drivers.size(), driversBefore);
+    }
+    EXPECT_NEAR(w.cloth.x[p].x(), 1.5f, 0.05f);
+    EXPECT_GT(w.tearLog.total(), 0u) << "a hard pull tears the cloth";
+    EXPECT_EQ(drag.particle, p) << "the held particle keeps its index through tearing";
+    releaseDrag(w, drag, false);
+    EXPECT_FALSE(drag.active());
+    EXPECT_FALSE(w.cloth.pinned(p));
+}
+
+TEST(AppTools, PinKeyKeepsTheGrabbedParticlePinned) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain"), "");
+    const View view = frontView();
+    DragState drag;
+    ASSERT_TRUE(beginDrag(w, drag, view, pixelOf(view, Vec3(0.3f, -0.8f, 0.f))));
+    const Index p = drag.particle;
+    releaseDrag(w, drag, true);
+    EXPECT_TRUE(w.cloth.pinned(p));
+    const Vec3 at = w.cloth.x[p];
+    for (int i = 0; i < 10; ++i) w.step();
+    EXPECT_NEAR((w.cloth.x[p] - at).norm(), 0.f, 1e-6f);
+}
+
+TEST(AppTools, NothingUnderTheCursorGrabsNothing) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain"), "");
+    DragState drag;
+    EXPECT_FALSE(beginDrag(w, drag, frontView(), Vec2(5.f, 5.f)));
+    EXPECT_FALSE(drag.active());
+}
+
+TEST(AppTools, ThrownBallIsAimedThroughTheCursorAndHitsTheCloth) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"ball.speed=12", "ball.radius=0.3"}), "");
+    const View view = frontView();
+    const Throw t = throwBall(w, view, pixelOf(view, Vec3(0.f, -0.2f, 0.f)));
+    EXPECT_TRUE(t.aimed);
+    EXPECT_NEAR(t.ball.v.norm(), 12.f, 1e-3f);
+    w.balls.push_back(t.ball);
+    float closest = 1e9f;
+    for (int f = 0; f < 60; ++f) {
+        w.step();
+        for (const Vec3& x : w.cloth.x) closest = std::min(closest, (x - w.balls[0].x).norm());
+    }
+    EXPECT_LT(closest, 0.3f + 0.05f);
+    EXPECT_LT(w.balls[0].x.z(), 1.0f) << "the ball reached the cloth";
+}
+
+TEST(AppTools, SlowBallIsNotAimedAndSaysWhatSpeedItNeeds) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"ball.speed=1"}), "");
+    const View view = frontView();
+    const Throw t = throwBall(w, view, pixelOf(view, Vec3(0.f, 0.f, 0.f)));
+    EXPECT_FALSE(t.aimed);
+    EXPECT_GT(t.neededSpeed, 1.f);
+}
+
+TEST(AppTools, BallisticVelocityReachesTheTarget) {
+    const Vec3 from(0, 1, 5), to(0.5f, -0.5f, 0), g(0, -9.81f, 0);
+    Vec3 v;
+    float minSpeed;
+    ASSERT_TRUE(ballisticVelocity(from, to, g, 10.f, v, minSpeed));
+    EXPECT_NEAR(v.norm(), 10.f, 1e-3f);
+    // Integrate exactly: some t puts the ball on the target.
+    const Vec3 d = to - from;
+    const float t = d.z() / v.z();
+    EXPECT_NEAR((from + v * t + 0.5f * g * t * t - to).norm(), 0.f, 1e-3f);
+    EXPECT_FALSE(ballisticVelocity(from, to, g, minSpeed * 0.9f, v, minSpeed));
+    EXPECT_TRUE(ballisticVelocity(from, to, g, minSpeed * 1.01f, v, minSpeed));
+}
+
+TEST(AppTools, WindPushesAlongTheViewOnlyInsideTheRadius) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"gravity.y=0"}), "");
+    const View view = frontView();
+    const WindSource src = windSourceAt(view, pixelOf(view, Vec3(0.f, -0.5f, 0.f)));
+    const int n = applyWind(w, src, 60.f, 50.f, 0.1f);
+    EXPECT_GT(n, 0);
+    int pushed = 0;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+        if (w.cloth.v[p].squaredNorm() == 0.f) continue;
+        ++pushed;
+        EXPECT_LT(w.cloth.v[p].z(), 0.f) << "away from the camera";
+        EXPECT_LT(std::abs(w.cloth.x[p].x()), 0.6f);
+    }
+    EXPECT_EQ(pushed, n);
+}
+
+TEST(AppTools, ImpulseRightClickReverses) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain"), "");
+    const View view = frontView();
+    const Vec2 c = pixelOf(view, Vec3(0.f, -0.5f, 0.f));
+    ASSERT_GT(applyScreenImpulse(w, view, c, 50.f, 2.f), 0);
+    float sum = 0.f;
+    for (const Vec3& v : w.cloth.v) sum += v.z();
+    EXPECT_LT(sum, 0.f);
+    applyScreenImpulse(w, view, c, 50.f, -4.f);
+    sum = 0.f;
+    for (const Vec3& v : w.cloth.v) sum += v.z();
+    EXPECT_GT(sum, 0.f);
+}
+
+TEST(AppTools, PinToolToggles) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain"), "");
+    const View view = frontView();
+    const Vec2 c = pixelOf(view, Vec3(0.2f, -0.3f, 0.f));
+    const Index p = togglePinAt(w, view, c);
+    ASSERT_NE(p, kNone);
+    EXPECT_TRUE(w.cloth.pinned(p));
+    EXPECT_EQ(togglePinAt(w, view, c), p);
+    EXPECT_FALSE(w.cloth.pinned(p));
+}
+
+TEST(AppSimClock, FixedStepsAndSlowsDownInsteadOfSpiralling) {
+    SimClock c;
+    const double dt = 1.0 / 60.0;
+    int total = 0;
+    for (int i = 0; i < 60; ++i) total += c.advance(1.0 / 60.0, dt);
+    EXPECT_NEAR(total, 60, 1);
+    EXPECT_FALSE(c.slowedDown);
+    // 30 displayed frames per second: two steps each.
+    EXPECT_EQ(c.advance(2.0 / 60.0 + 1e-9, dt), 2);
+    // Steps cost 25 ms: at most one per frame, and the backlog is dropped.
+    c.reportStepCost(25.0);
+    const int n = c.advance(0.2, dt);
+    EXPECT_EQ(n, 1);
+    EXPECT_TRUE(c.slowedDown);
+    EXPECT_LT(c.accumulator, dt);
+    // A long stall is clamped.
+    SimClock d;
+    EXPECT_LE(d.advance(10.0, dt), d.maxStepsPerFrame);
+}

@@ -1,0 +1,160 @@
+// The real app in a virtual X display (Xvfb, started by each test through xvfb-run): screenshots,
+// replayed scripts (drag tears, a ball hits, a panel click changes a parameter), exit statuses and the
+// no-display message. Skipped, saying why, only when xvfb-run is not installed.
+#include "image_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <set>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace clothtear::app;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct AppRun {
+    int status = -1;
+    std::string output;
+};
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1 && command -v Xvfb >/dev/null 2>&1") == 0; }
+
+#define REQUIRE_XVFB()                                                                                        \
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run/Xvfb not installed (apt-get install xvfb xauth); cannot open a window"
+
+fs::path tempDir() {
+    const fs::path d = fs::temp_directory_path() / ("clothtear_app_window_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+AppRun runApp(const std::string& args, bool display = true) {
+    const fs::path out = tempDir() / "output.txt";
+    const std::string prefix = display ? "xvfb-run -a -s '-screen 0 1280x720x24' " : "env -u DISPLAY -u WAYLAND_DISPLAY ";
+    const std::string cmd = prefix + "'" + CLOTHTEAR_APP_BINARY + "' " + args + " > '" + out.string() + "' 2>&1";
+    const int rc = std::system(cmd.c_str());
+    AppRun r;
+    r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    r.output = slurp(out);
+    return r;
+}
+
+nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(slurp(p)); }
+
+std::string data(const char* name) { return std::string(CLOTHTEAR_APP_TEST_DATA) + "/" + name; }
+
+// Colour spread of a window region: the mean over channels of the standard deviation.
+double spread(const Image& img, int x0, int y0, int x1, int y1) {
+    double sum[3] = {}, sq[3] = {};
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n)
+            for (int c = 0; c < 3; ++c) {
+                const double v = img.rgba[(size_t(y) * img.width + x) * 4 + c];
+                sum[c] += v;
+                sq[c] += v * v;
+            }
+    double s = 0;
+    for (int c = 0; c < 3; ++c) s += std::sqrt(std::max(0.0, sq[c] / n - (sum[c] / n) * (sum[c] / n)));
+    return s / 3.0;
+}
+
+} // namespace
+
+TEST(AppWindow, ScreenshotShowsTheTexturedCloth) {
+    REQUIRE_XVFB();
+    const fs::path shot = tempDir() / "shot.png", plain = tempDir() / "plain.png", script = tempDir() / "t.txt";
+    AppRun r = runApp("--scene curtain --frames 20 --screenshot '" + shot.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    auto img = loadImage(shot.string());
+    ASSERT_TRUE(img.ok()) << img.error;
+    ASSERT_EQ(img.value.width, 1280);
+    ASSERT_EQ(img.value.height, 720);
+    std::set<uint32_t> colours;
+    for (size_t i = 0; i < img.value.rgba.size(); i += 4)
+        colours.insert(uint32_t(img.value.rgba[i]) << 16 | uint32_t(img.value.rgba[i + 1]) << 8 | img.value.rgba[i + 2]);
+    EXPECT_GT(colours.size(), 500u) << "the screenshot is blank";
+    // The cloth fills the middle of the view; with its texture the middle is far more varied than
+    // the same frame with the texture switched off (T).
+    std::ofstream(script) << "0 key T\n";
+    r = runApp("--scene curtain --frames 20 --script '" + script.string() + "' --screenshot '" + plain.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    auto flat = loadImage(plain.string());
+    ASSERT_TRUE(flat.ok()) << flat.error;
+    const double textured = spread(img.value, 560, 260, 760, 460), untextured = spread(flat.value, 560, 260, 760, 460);
+    EXPECT_GT(textured, 2.0 * untextured + 10.0) << "textured " << textured << " vs plain " << untextured;
+}
+
+TEST(AppWindow, ReplayedDragTearsTheCloth) {
+    REQUIRE_XVFB();
+    const fs::path json = tempDir() / "drag.json", rec = tempDir() / "rec.txt", json2 = tempDir() / "drag2.json";
+    AppRun r = runApp("--scene curtain --script '" + data("drag_tear.txt") + "' --json '" + json.string() + "' --record '" +
+                   rec.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto report = readJson(json);
+    EXPECT_GT(report["tears_total"].get<int>(), 0) << report["tears"].dump();
+    EXPECT_GE(report["app"]["topology_uploads"].get<int>(), 2) << "index buffers re-uploaded after tearing";
+    // The recording of that replay replays to the same cloth.
+    r = runApp("--scene curtain --script '" + rec.string() + "' --json '" + json2.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto again = readJson(json2);
+    EXPECT_EQ(again["tears"], report["tears"]);
+    EXPECT_EQ(again["particles"], report["particles"]);
+}
+
+TEST(AppWindow, ReplayedBallThrowHitsTheCloth) {
+    REQUIRE_XVFB();
+    const fs::path json = tempDir() / "ball.json";
+    AppRun r = runApp("--scene curtain --set ball.speed=7 --script '" + data("ball_throw.txt") + "' --json '" +
+                   json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto report = readJson(json);
+    EXPECT_EQ(report["app"]["balls_thrown"].get<int>(), 1);
+    EXPECT_EQ(report["app"]["balls_hit_cloth"].get<int>(), 1) << r.output;
+}
+
+TEST(AppWindow, ReplayedPanelClickChangesAParameter) {
+    REQUIRE_XVFB();
+    const fs::path json = tempDir() / "panel.json";
+    AppRun r = runApp("--scene curtain --script '" + data("panel_wind.txt") + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto report = readJson(json);
+    EXPECT_EQ(report["settings"]["wind.enabled"], "true") << "the click on the Wind switch did not reach the panel";
+    EXPECT_EQ(report["app"]["balls_thrown"].get<int>(), 0);
+}
+
+TEST(AppWindow, MalformedScriptNamesFileAndLineAndExits2) {
+    const fs::path bad = tempDir() / "bad_script.txt";
+    std::ofstream(bad) << "0 move 10 10\n3 wiggle left\n";
+    AppRun r = runApp("--scene curtain --script '" + bad.string() + "'", haveXvfb());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("bad_script.txt:2:"), std::string::npos) << r.output;
+}
+
+TEST(AppWindow, NoDisplaySaysSoAndNamesBothRemedies) {
+    AppRun r = runApp("--scene curtain --frames 1", false);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("xvfb-run -a clothtear"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("clothtear --headless"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
+}
+
+TEST(AppWindow, HeadlessStillWorksWithoutADisplay) {
+    AppRun r = runApp("--headless --scene curtain --seconds 0.1", false);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("curtain"), std::string::npos) << r.output;
+}
