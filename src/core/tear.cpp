@@ -270,17 +270,24 @@ bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext&
 
 // Tears spring s if its strain calls for it, choosing the mode from its ends. `force` skips the
 // thresholds (topology fuzzing, pre-cut notches).
-bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force) {
+// `scanStrain` is the strain the scan saw (before the limit pulled other springs back); a tear
+// decision uses the larger of it and the current strain.
+bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force, float scanStrain) {
     const TearSettings& T = ctx.settings;
-    const float strain = strainOf(c, s);
+    const float strain = std::max(strainOf(c, s), scanStrain);
     const Index a = c.springs[s].a, b = c.springs[s].b;
     for (Index p : {a, b})
         if ((c.flags[p] & kHinge) && (force || strain >= T.onePointThreshold) && onePointSplit(c, p, s, strain, ctx))
             return true;
+    bool weakEnd = false;
     for (Index p : {a, b})
-        if ((c.flags[p] & kWeak) && (force || strain >= T.weakThreshold) && weakTear(c, p, s, strain, ctx))
-            return true;
-    if (force || strain >= T.threshold) return basicTear(c, s, strain, ctx);
+        if ((c.flags[p] & (kWeak | kHinge)) && (force || strain >= std::min(T.weakThreshold, T.onePointThreshold))) {
+            weakEnd = true;
+            if ((c.flags[p] & kWeak) && weakTear(c, p, s, strain, ctx)) return true;
+        }
+    // A weak end whose fan offers no path (e.g. the tense spring is a wall of the slit) tears the
+    // spring itself: it was exempt from the limit this sub-step and must not stay overstretched.
+    if (force || weakEnd || strain >= T.threshold) return basicTear(c, s, strain, ctx);
     return false;
 }
 
@@ -303,16 +310,20 @@ int tearSprings(Cloth& c, std::vector<TearCandidate>& candidates, const TearCont
         return x.strain != y.strain ? x.strain > y.strain : x.spring < y.spring;
     });
     // Springs are renumbered as tears append; remember candidates by their particles.
-    std::vector<std::pair<Index, Index>> ends;
+    struct Ends {
+        Index a, b;
+        float strain;
+    };
+    std::vector<Ends> ends;
     ends.reserve(candidates.size());
     for (const TearCandidate& k : candidates)
-        if (k.spring < c.springs.size()) ends.emplace_back(c.springs[k.spring].a, c.springs[k.spring].b);
+        if (k.spring < c.springs.size()) ends.push_back({c.springs[k.spring].a, c.springs[k.spring].b, k.strain});
     int tears = 0;
-    for (const auto& [a, b] : ends) {
+    for (const Ends& e : ends) {
         if (tears >= ctx.settings.maxPerStep) break;
-        const Index s = findSpring(c, a, b);
+        const Index s = findSpring(c, e.a, e.b);
         if (s == kNone) continue;
-        if (tearOne(c, s, ctx, false)) {
+        if (tearOne(c, s, ctx, false, e.strain)) {
             ++tears;
             validateAfterTear(c, ctx);
         }
@@ -322,7 +333,7 @@ int tearSprings(Cloth& c, std::vector<TearCandidate>& candidates, const TearCont
 
 bool forceTear(Cloth& c, Index s, const TearContext& ctx) {
     if (s >= c.springs.size()) return false;
-    const bool torn = tearOne(c, s, ctx, true);
+    const bool torn = tearOne(c, s, ctx, true, 0.f);
     if (torn) validateAfterTear(c, ctx);
     return torn;
 }

@@ -341,8 +341,10 @@ void World::phaseIntegrate(float dt) {
 // together, split by inverse mass; pinned ends never move. Corrections are averaged per particle
 // (Jacobi) and over-relaxed, so the result does not depend on spring order: a fixed row-major
 // Gauss-Seidel sweep over stiff links is what makes some solvers blow up at high resolution.
-// A spring at or above its tear threshold is left alone so that it can tear (Onal 3.2).
-// The first pass also records the strain of every spring (the tear phase's candidate list).
+// A spring that tears this sub-step is left alone (Onal 3.2): the first pass records every spring at
+// or above its tear threshold (the tear phase's candidates) and skips them. If there are more than
+// tear.max_per_step candidates, only the most strained max_per_step are exempt; the later passes
+// limit the others, so a spring is never left unlimited without being torn (that ran away).
 void World::phaseLimit(float dt) {
     const size_t n = cloth.particleCount();
     const size_t ns = cloth.springs.size();
@@ -368,6 +370,7 @@ void World::phaseLimit(float dt) {
     // Tear candidates of this sub-step, per thread then merged in thread order (deterministic).
     std::vector<std::vector<TearCandidate>> found(threads);
     const int passes = limiting ? L.iterations : 1;
+    float exemptStrain = -1.f; // after pass 0: candidates below this strain are limited after all
     for (int pass = 0; pass < passes; ++pass) {
         int violated = 0;
         parallelRegion(n, threads, [&](int t, int nt) {
@@ -393,7 +396,8 @@ void World::phaseLimit(float dt) {
                 const float tearLen = s.rest * (weak ? weakRatio : tearRatio);
                 if (pass == 0 && len2 >= tearLen * tearLen)
                     found[t].push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
-                if (!limiting || len2 <= maxLen * maxLen || len2 >= tearLen * tearLen) continue;
+                if (!limiting || len2 <= maxLen * maxLen) continue;
+                if (len2 >= tearLen * tearLen && (pass == 0 || std::sqrt(len2) / s.rest - 1.f >= exemptStrain)) continue;
                 const float wa = invMass[s.a], wb = invMass[s.b];
                 if (wa + wb == 0.f) continue;
                 const float len = std::sqrt(len2);
@@ -423,9 +427,32 @@ void World::phaseLimit(float dt) {
                 if (count == 0.f) continue;
                 const Vec3 delta = sum * (L.relaxation / count);
                 x[p] += delta;
-                if (velocityFix) v[p] += delta * (1.f / dt);
+                // Inelastic velocity fix: cancel the velocity that carried p away from where the
+                // limit puts it, up to |delta| / dt, but never add velocity towards it. (Turning the
+                // whole correction into velocity, as v += delta / dt would, injects energy when a
+                // long overstretched spring is pulled back and set off tear cascades.)
+                if (velocityFix) {
+                    const float d = delta.norm();
+                    if (d > 0.f) {
+                        const Vec3 dir = delta / d;
+                        const float away = -v[p].dot(dir);
+                        if (away > 0.f) v[p] += dir * std::min(d / dt, away);
+                    }
+                }
             }
         });
+        if (pass == 0) {
+            size_t total = 0;
+            for (const auto& f : found) total += f.size();
+            if (total > size_t(T.maxPerStep)) {
+                std::vector<float> strains;
+                for (const auto& f : found)
+                    for (const TearCandidate& k : f) strains.push_back(k.strain);
+                std::nth_element(strains.begin(), strains.begin() + (T.maxPerStep - 1), strains.end(), std::greater<>());
+                exemptStrain = strains[T.maxPerStep - 1];
+                violated += int(total) - T.maxPerStep; // those still need limiting
+            }
+        }
         if (violated == 0) break;
     }
     scratch_.tearCandidates.clear();
