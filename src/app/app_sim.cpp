@@ -51,7 +51,8 @@ void App::simulate(double realSeconds) {
 }
 
 void App::stepOnce() {
-    const bool pushed = dragBeforeStep(world_, state_.drag, state_.tools.maxDragSpeed);
+    const size_t particlesBefore = world_.cloth.particleCount();
+    const size_t pushed = dragBeforeStep(world_, state_.drag, state_.tools.maxDragSpeed);
     if (state_.tools.windFixed || (state_.windBlowing && state_.tool == Tool::Wind))
         applyWind(world_, state_.windSource, state_.tools.radiusPx, state_.tools.windPressure,
                   world_.settings.time.frameDt);
@@ -59,7 +60,7 @@ void App::stepOnce() {
     world_.step();
     state_.clock.reportStepCost(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    dragAfterStep(world_, pushed);
+    dragAfterStep(world_, state_.drag, pushed, particlesBefore);
     trackBalls();
 }
 

@@ -24,7 +24,7 @@ View makeView(const OrbitCamera& camera, float width, float height) {
 
 // ============================================================================================ drag
 
-bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& cursor) {
+bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& cursor, float grabRadius) {
     const TriangleHit hit = pickTriangle(world.cloth, view.rayAt(cursor));
     const Index p = nearestCorner(world.cloth, hit);
     if (p == kNone) return false;
@@ -34,8 +34,18 @@ bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& curs
     drag.planeNormal = -view.camera.forward();
     drag.grabOffset = world.cloth.x[p] - hit.point;
     drag.target = world.cloth.x[p];
-    // Held by the tool: forces no longer move it, the driver does.
+    drag.patch.clear();
+    if (grabRadius > 0.f) {
+        // Neighbours in rest space (material distance), so a folded layer behind is not picked up.
+        const Vec3d& r0 = world.cloth.rest[p];
+        for (Index q = 0; q < world.cloth.particleCount(); ++q)
+            if (q != p && (world.cloth.rest[q] - r0).squaredNorm() <= double(grabRadius) * grabRadius &&
+                (world.cloth.x[q] - world.cloth.x[p]).norm() <= 2.f * grabRadius)
+                drag.patch.push_back({q, world.cloth.pinned(q), world.cloth.x[q] - world.cloth.x[p]});
+    }
+    // Held by the tool: forces no longer move them, the driver does.
     world.cloth.setPinned(p, true);
+    for (const DragState::Held& h : drag.patch) world.cloth.setPinned(h.particle, true);
     return true;
 }
 
@@ -47,24 +57,50 @@ void moveDrag(DragState& drag, const View& view, const Vec2& cursor) {
 
 void releaseDrag(World& world, DragState& drag, bool keepPinned) {
     if (!drag.active()) return;
-    if (drag.particle < world.cloth.particleCount()) world.cloth.setPinned(drag.particle, keepPinned || drag.wasPinned);
+    const size_t n = world.cloth.particleCount();
+    if (drag.particle < n) world.cloth.setPinned(drag.particle, keepPinned || drag.wasPinned);
+    for (const DragState::Held& h : drag.patch)
+        if (h.particle < n) world.cloth.setPinned(h.particle, keepPinned || h.wasPinned);
     drag = DragState{};
 }
 
-bool dragBeforeStep(World& world, const DragState& drag, float maxSpeed) {
-    if (!drag.active() || drag.particle >= world.cloth.particleCount()) return false;
+size_t dragBeforeStep(World& world, const DragState& drag, float maxSpeed) {
+    if (!drag.active() || drag.particle >= world.cloth.particleCount()) return 0;
+    const size_t before = world.drivers.size();
+    const Cloth& c = world.cloth;
+    const float dt = world.settings.time.frameDt;
+    auto velocityTo = [&](const Vec3& target, const Vec3& x) {
+        Vec3 v = (target - x) / dt;
+        const float speed = v.norm();
+        if (speed > maxSpeed) v *= maxSpeed / speed;
+        return v;
+    };
+    // One driver per particle: each heads for its place in the rigid patch around the target.
     Driver d;
     d.particles = {drag.particle};
-    Vec3 v = (drag.target - world.cloth.x[drag.particle]) / world.settings.time.frameDt;
-    const float speed = v.norm();
-    if (speed > maxSpeed) v *= maxSpeed / speed;
-    d.velocity = v;
+    d.velocity = velocityTo(drag.target, c.x[drag.particle]);
     world.drivers.push_back(std::move(d));
-    return true;
+    for (const DragState::Held& h : drag.patch) {
+        if (h.particle >= c.particleCount()) continue;
+        Driver e;
+        e.particles = {h.particle};
+        e.velocity = velocityTo(drag.target + h.offset, c.x[h.particle]);
+        world.drivers.push_back(std::move(e));
+    }
+    return world.drivers.size() - before;
 }
 
-void dragAfterStep(World& world, bool pushed) {
-    if (pushed && !world.drivers.empty()) world.drivers.pop_back();
+void dragAfterStep(World& world, const DragState& drag, size_t pushed, size_t particlesBefore) {
+    world.drivers.resize(world.drivers.size() - std::min(pushed, world.drivers.size()));
+    Cloth& c = world.cloth;
+    if (!drag.active() || c.particleCount() <= particlesBefore) return;
+    auto restore = [&](Index held, bool wasPinned) {
+        if (wasPinned || held >= c.rest.size()) return;
+        for (Index q = Index(particlesBefore); q < c.particleCount(); ++q)
+            if (c.pinned(q) && c.rest[q] == c.rest[held]) c.setPinned(q, false);
+    };
+    restore(drag.particle, drag.wasPinned);
+    for (const DragState::Held& h : drag.patch) restore(h.particle, h.wasPinned);
 }
 
 // ==================================================================================== wind, impulse

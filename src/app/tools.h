@@ -20,6 +20,8 @@ struct ToolSettings {
     float impulse = 3.f;       // m/s, [0, 50]     impulse tool velocity change at the centre
     bool windFixed = false;    //                  wind source fixed in place; it blows until unfixed
     float maxDragSpeed = 40.f; // m/s, [1, 500]    how fast the grabbed particle may chase the cursor
+    float grabRadius = 0.08f;  // m, [0, 1]        the drag also holds the particles this close to the grabbed one
+                               //                  (0: the one particle; larger spreads the pull over a patch)
 };
 
 // What the tools need to know about the view: camera and window size (window coordinates).
@@ -35,6 +37,12 @@ View makeView(const OrbitCamera& camera, float width, float height);
 struct DragState {
     Index particle = kNone;            // the grabbed particle
     bool wasPinned = false;            // restored on release
+    struct Held {
+        Index particle;
+        bool wasPinned;
+        Vec3 offset; // from the grabbed particle at grab time
+    };
+    std::vector<Held> patch;           // the other particles within grabRadius, moved rigidly with it
     Vec3 planePoint = Vec3::Zero();    // the camera-facing plane through the grab point
     Vec3 planeNormal = Vec3::UnitZ();
     Vec3 grabOffset = Vec3::Zero();    // particle minus hit point at grab time
@@ -42,13 +50,17 @@ struct DragState {
     bool active() const { return particle != kNone; }
 };
 // Picks the triangle under the cursor and grabs its corner nearest to the hit. False when nothing is hit.
-bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& cursor);
+bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& cursor, float grabRadius = 0.f);
 void moveDrag(DragState& drag, const View& view, const Vec2& cursor);
 // Lets go; keepPinned leaves the particle pinned where it is (the pin key).
 void releaseDrag(World& world, DragState& drag, bool keepPinned);
-// Around each world.step(): a driver moves the particle to its target over one frame.
-bool dragBeforeStep(World& world, const DragState& drag, float maxSpeed);
-void dragAfterStep(World& world, bool pushed);
+// Around each world.step(): drivers move the held particles to their targets over one frame.
+// dragBeforeStep returns how many drivers it appended; dragAfterStep removes them again, and frees the
+// copies that tearing made of held particles during the step: a split copies the particle's flags, so
+// the copy would otherwise stay pinned in mid-air, held by nobody. (A copy has its original's rest
+// position; tearing appends copies at the end, from particlesBefore on.)
+size_t dragBeforeStep(World& world, const DragState& drag, float maxSpeed);
+void dragAfterStep(World& world, const DragState& drag, size_t pushed, size_t particlesBefore);
 
 // ---- wind and impulse ------------------------------------------------------------------------------
 // The source of the wind tool: where on screen it blows and along which direction. Fixing the source
