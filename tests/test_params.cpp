@@ -85,7 +85,7 @@ void expectRoundTrip(const Settings& source, const ParamInfo& p) {
 // which does not read back as the same float for 1/60 (time.frame_dt's default reads back 18 ulps
 // off) or for any value with more digits. Enable once floats are printed with
 // std::numeric_limits<float>::max_digits10 (9) digits or std::to_chars' shortest form.
-TEST(Params, DISABLED_EveryParameterRoundTripsExactly) {
+TEST(Params, EveryParameterRoundTripsExactly) {
     const Settings defaults;
     for (const ParamInfo& p : allParams()) {
         expectRoundTrip(defaults, p);

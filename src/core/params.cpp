@@ -116,6 +116,7 @@ std::string trim(std::string_view v) {
 
 std::string fmtDouble(double v) {
     std::ostringstream o;
+    o.precision(9); // enough digits for a float to read back exactly
     o << v;
     return o.str();
 }
@@ -151,7 +152,7 @@ void setParamUnchecked(Settings& s, const ParamInfo& p, double value) {
 
 std::string setParamFromString(Settings& s, std::string_view name, std::string_view rawValue) {
     const ParamInfo* p = findParam(name);
-    if (!p) return "unknown parameter '" + std::string(name) + "' (see --help-params for the list)";
+    if (!p) return "unknown parameter '" + std::string(name) + "' (see --list-params for the list)";
     const std::string value = trim(rawValue);
     if (value.empty()) return "parameter '" + std::string(name) + "': empty value";
     if (p->type == ParamType::Bool) {
