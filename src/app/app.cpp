@@ -343,6 +343,9 @@ nlohmann::json App::report(double wallSeconds) const {
         {"balls_hit_cloth", state_.ballsHitCloth},
         {"script_events", script_.events.size()},
         {"topology_uploads", renderer_.topologyUploads()},
+        {"draw_ms", state_.stats.drawMs},
+        {"swap_ms", state_.stats.swapMs},
+        {"step_ms", state_.clock.stepCostMs},
         {"texture", state_.textureName},
         {"texture_error", state_.textureError},
     };

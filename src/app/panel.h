@@ -8,7 +8,7 @@
 
 namespace clothtear::app {
 
-inline constexpr float kPanelWidth = 380.f; // px
+inline constexpr float kPanelWidth = 400.f; // px
 
 void drawControlPanel(AppState& state, World& world);
 void drawStatsPane(AppState& state, const World& world);

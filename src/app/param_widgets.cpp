@@ -56,7 +56,7 @@ ParamEdit paramWidget(Settings& s, const ParamInfo& p, bool unsafe) {
     const bool outside = (p.type == ParamType::Float || p.type == ParamType::Int) && (now < p.safeMin || now > p.safeMax);
     ParamEdit edit = ParamEdit::None;
     ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (wantsLog(lo, hi) ? ImGuiSliderFlags_Logarithmic : 0);
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.58f);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     switch (p.type) {
     case ParamType::Float: {
         float v = float(now);

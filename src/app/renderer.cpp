@@ -184,7 +184,12 @@ void Renderer::drawGround(const World& world, const RenderOptions& o, const View
     setVec3(groundProgram_, "uColor", o.ground);
     setVec3(groundProgram_, "uSky", o.sky);
     glBindVertexArray(groundVao_);
+    // Drawn first, behind everything (colliders keep the cloth and balls above it): no depth traffic.
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
     glDrawArrays(GL_TRIANGLES, 0, 6);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
 }
 
 // ============================================================================================ [CLOTH]

@@ -158,3 +158,52 @@ TEST(AppWindow, HeadlessStillWorksWithoutADisplay) {
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("curtain"), std::string::npos) << r.output;
 }
+
+namespace {
+// Opens the Texture section, types `path` into the loader and presses Enter.
+std::string textureScript(const std::string& path) {
+    std::string s = "0 move 60 248\n1 click left\n3 move 120 288\n4 click left\n";
+    for (unsigned char c : path) s += "6 char " + std::to_string(int(c)) + "\n";
+    s += "8 key ENTER\n12 end\n";
+    return s;
+}
+} // namespace
+
+TEST(AppWindow, MissingOrBrokenTextureShowsAnErrorAndKeepsTheTexture) {
+    REQUIRE_XVFB();
+    const fs::path script = tempDir() / "tex_missing.txt", json = tempDir() / "tex_missing.json";
+    const fs::path broken = tempDir() / "broken.png";
+    std::ofstream(broken) << "not an image";
+    for (const fs::path& bad : {tempDir() / "no_such_texture.png", broken}) {
+        std::ofstream(script) << textureScript(bad.string());
+        AppRun r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "'");
+        ASSERT_EQ(r.status, 0) << r.output;
+        const auto report = readJson(json);
+        const std::string error = report["app"]["texture_error"];
+        EXPECT_NE(error.find(bad.filename().string()), std::string::npos) << error;
+        EXPECT_NE(report["app"]["texture"].get<std::string>().find("fabric"), std::string::npos)
+            << "the current texture stays";
+    }
+}
+
+TEST(AppWindow, TextureLoadsFromThePanel) {
+    REQUIRE_XVFB();
+    const fs::path script = tempDir() / "tex_ok.txt", json = tempDir() / "tex_ok.json", png = tempDir() / "red.png";
+    const fs::path shot = tempDir() / "red_shot.png";
+    Image red;
+    red.width = red.height = 8;
+    red.rgba.assign(8 * 8 * 4, 0);
+    for (size_t i = 0; i < red.rgba.size(); i += 4) red.rgba[i] = 230, red.rgba[i + 3] = 255;
+    ASSERT_EQ(savePng(png.string(), red), "");
+    std::ofstream(script) << textureScript(png.string());
+    AppRun r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "' --screenshot '" +
+                      shot.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto report = readJson(json);
+    EXPECT_EQ(report["app"]["texture"], png.string());
+    EXPECT_EQ(report["app"]["texture_error"], "");
+    auto img = loadImage(shot.string());
+    ASSERT_TRUE(img.ok());
+    const uint8_t* px = &img.value.rgba[(size_t(360) * 1280 + 660) * 4];
+    EXPECT_GT(int(px[0]), 2 * int(px[1]) + 20) << "the cloth in the middle is red now";
+}
