@@ -85,7 +85,7 @@ struct ClothSettings {
 struct SceneParams {
     float pullAngle = 0.f;   // deg, [-180, 180] pull scene: direction in the cloth plane, 0 = straight down
     float pullSpeed = 0.5f;  // m/s, [0, 20]
-    float tensionSpeed = 0.1f; // m/s, [0, 20] tension scene: each clamp moves outward at this speed
+    float tensionSpeed = 0.5f; // m/s, [0, 20] tension scene: each clamp moves outward at this speed
     bool tensionNotch = false; // tension scene: pre-cut slit in the middle
     float ballRadius = 0.5f; // m, [0.01, 10]
     float ballSpeed = 3.f;   // m/s, [0, 100]

@@ -114,6 +114,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"tears", tears},
         {"tears_total", w.tearLog.total()},
         {"tear_events", events},
+        {"validation_error", w.tearLog.validationError}, // first invariant violation (tear.validate=1)
         {"balls", balls},
     };
 }

@@ -60,6 +60,11 @@ void tearClothConfig(Settings& s) {
     s.cloth.resolutionX = 48;
     s.cloth.resolutionY = 48;
     s.collision.groundHeight = -5.f;
+    // Found by a sweep over ball mass {5, 10, 20} kg x tear threshold {0.15, 0.2, 0.25} (README).
+    s.tear.threshold = 0.25f;
+    s.tear.weakThreshold = 0.15f;
+    s.tear.onePointThreshold = 0.15f;
+    s.scene.ballMass = 10.f;
 }
 
 // Pull: top edge pinned, the bottom-centre particle is dragged at pull.speed along pull.angle in the
