@@ -209,6 +209,11 @@ void App::frame(bool last) {
     lastTime_ = now;
     const float frameDt = world_.settings.time.frameDt;
 
+    {
+        int w = 1, h = 1;
+        glfwGetWindowSize(window_, &w, &h);
+        state_.camera.shiftX = state_.showPanel ? std::min(0.6f, kPanelWidth / float(std::max(w, 1))) : 0.f;
+    }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     feedImGui();
@@ -275,12 +280,13 @@ void App::serveRequests() {
     if (state_.requestResetView) {
         state_.requestResetView = false;
         const Cloth& c = world_.cloth;
-        Vec3 lo = Vec3::Constant(-1.f), hi = Vec3::Constant(1.f);
-        if (c.particleCount()) {
-            lo = hi = c.x[0];
-            for (const Vec3& x : c.x)
-                if (x.allFinite()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-        }
+        // Frame the cloth and the balls (the drop scene's ball waits on the ground below the cloth).
+        Vec3 lo = Vec3::Constant(1e30f), hi = Vec3::Constant(-1e30f);
+        for (const Vec3& x : c.x)
+            if (x.allFinite()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+        for (const Ball& b : world_.balls)
+            if (b.x.allFinite()) lo = lo.cwiseMin(b.x - Vec3::Constant(b.radius)), hi = hi.cwiseMax(b.x + Vec3::Constant(b.radius));
+        if (!(lo.x() <= hi.x())) lo = Vec3::Constant(-1.f), hi = Vec3::Constant(1.f);
         state_.camera.frame(lo, hi);
     }
     if (state_.requestLoadTexture) {

@@ -33,6 +33,7 @@ Mat4 OrbitCamera::projection(float aspect) const {
     const float t = 1.f / std::tan(0.5f * fovY);
     Mat4 m = Mat4::Zero();
     m(0, 0) = t / std::max(aspect, 1e-6f);
+    m(0, 2) = -shiftX; // x_ndc += shiftX (clip w = -z_eye)
     m(1, 1) = t;
     m(2, 2) = -(farZ + nearZ) / (farZ - nearZ);
     m(2, 3) = -2.f * farZ * nearZ / (farZ - nearZ);
@@ -71,7 +72,7 @@ void OrbitCamera::frame(const Vec3& boxMin, const Vec3& boxMax) {
 
 Ray rayThroughPixel(const OrbitCamera& c, float px, float py, float width, float height) {
     const float aspect = width / std::max(height, 1.f);
-    const float ndcX = 2.f * px / std::max(width, 1.f) - 1.f;
+    const float ndcX = 2.f * px / std::max(width, 1.f) - 1.f - c.shiftX;
     const float ndcY = 1.f - 2.f * py / std::max(height, 1.f);
     const float t = std::tan(0.5f * c.fovY);
     Ray r;

@@ -25,6 +25,9 @@ struct OrbitCamera {
     float fovY = 0.8f;                   // rad, vertical field of view
     float nearZ = 0.02f;                 // m
     float farZ = 500.f;                  // m
+    float shiftX = 0.f;                  // NDC units the image centre moves right, so what the camera
+                                         // looks at stays centred in the part of the window the panel
+                                         // leaves free (a lens shift: rays and projection both use it)
 
     Vec3 position() const;
     Vec3 forward() const; // unit, from the eye towards the target
