@@ -212,7 +212,10 @@ void App::frame(bool last) {
     {
         int w = 1, h = 1;
         glfwGetWindowSize(window_, &w, &h);
-        state_.camera.shiftX = state_.showPanel ? std::min(0.6f, kPanelWidth / float(std::max(w, 1))) : 0.f;
+        // Centre the view between the panel (left) and the stats pane (right).
+        const float left = state_.showPanel ? kPanelWidth : 0.f;
+        const float right = float(w) - (state_.showStats ? kStatsWidth + 8.f : 0.f);
+        state_.camera.shiftX = right - left > 100.f ? std::clamp((left + right) / float(std::max(w, 1)) - 1.f, -0.6f, 0.6f) : 0.f;
     }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();

@@ -186,7 +186,7 @@ void drawControlPanel(AppState& st, World& world) {
 void drawStatsPane(AppState& st, const World& world) {
     if (!st.showStats) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float width = 300.f;
+    const float width = kStatsWidth;
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width - 8.f, 8.f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, 0.f), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.7f);
@@ -257,7 +257,8 @@ void drawToolHud(const AppState& st, const World& world, const View& view, float
     if (!st.message.empty() && st.frame - st.messageFrame < 300) {
         const ImVec2 size = ImGui::CalcTextSize(st.message.c_str());
         const float left = st.showPanel ? kPanelWidth : 0.f;
-        const ImVec2 pos(left + 0.5f * (view.width - left - size.x), view.height - size.y - 14.f);
+        const float right = view.width - (st.showStats ? kStatsWidth + 8.f : 0.f);
+        const ImVec2 pos(0.5f * (left + right - size.x), view.height - size.y - 14.f);
         dl->AddRectFilled(ImVec2(pos.x - 8.f, pos.y - 4.f), ImVec2(pos.x + size.x + 8.f, pos.y + size.y + 4.f),
                           IM_COL32(20, 20, 28, 200), 4.f);
         dl->AddText(pos, IM_COL32(255, 235, 180, 255), st.message.c_str());

@@ -8,7 +8,8 @@
 
 namespace clothtear::app {
 
-inline constexpr float kPanelWidth = 400.f; // px
+inline constexpr float kPanelWidth = 400.f; // px, the control panel on the left
+inline constexpr float kStatsWidth = 300.f; // px, the stats pane on the right
 
 void drawControlPanel(AppState& state, World& world);
 void drawStatsPane(AppState& state, const World& world);

@@ -95,7 +95,7 @@ TEST(AppWindow, ScreenshotShowsTheTexturedCloth) {
     ASSERT_EQ(r.status, 0) << r.output;
     auto flat = loadImage(plain.string());
     ASSERT_TRUE(flat.ok()) << flat.error;
-    const double textured = spread(img.value, 740, 260, 940, 460), untextured = spread(flat.value, 740, 260, 940, 460);
+    const double textured = spread(img.value, 605, 260, 805, 460), untextured = spread(flat.value, 605, 260, 805, 460);
     EXPECT_GT(textured, 2.0 * untextured + 10.0) << "textured " << textured << " vs plain " << untextured;
 }
 
@@ -204,6 +204,6 @@ TEST(AppWindow, TextureLoadsFromThePanel) {
     EXPECT_EQ(report["app"]["texture_error"], "");
     auto img = loadImage(shot.string());
     ASSERT_TRUE(img.ok());
-    const uint8_t* px = &img.value.rgba[(size_t(360) * 1280 + 840) * 4];
+    const uint8_t* px = &img.value.rgba[(size_t(360) * 1280 + 705) * 4];
     EXPECT_GT(int(px[0]), 2 * int(px[1]) + 20) << "the cloth in the middle is red now";
 }
