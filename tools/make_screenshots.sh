@@ -3,7 +3,7 @@
 # input scripts next to them. Usage: tools/make_screenshots.sh [path/to/clothtear]
 set -e
 cd "$(dirname "$0")/.."
-app=${1:-build/src/app/clothtear}
+app=${1:-build/release/src/app/clothtear}
 dir=assets/screenshots
 shot() { # name scene [extra args]
     name=$1 scene=$2

@@ -42,14 +42,24 @@ std::string slurp(const fs::path& p) {
     return s.str();
 }
 
-AppRun runApp(const std::string& args, bool display = true) {
+AppRun runOnce(const std::string& prefix, const std::string& args) {
     const fs::path out = tempDir() / "output.txt";
-    const std::string prefix = display ? "xvfb-run -a -s '-screen 0 1280x720x24' " : "env -u DISPLAY -u WAYLAND_DISPLAY ";
     const std::string cmd = prefix + "'" + CLOTHTEAR_APP_BINARY + "' " + args + " > '" + out.string() + "' 2>&1";
     const int rc = std::system(cmd.c_str());
     AppRun r;
     r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
     r.output = slurp(out);
+    return r;
+}
+
+AppRun runApp(const std::string& args, bool display = true) {
+    if (!display) return runOnce("env -u DISPLAY -u WAYLAND_DISPLAY ", args);
+    // ctest -j runs these in parallel: start from a display number of our own (xvfb-run -a alone can
+    // race with another test for the same number), and retry once on a server that failed to start.
+    const std::string screen = "-s '-screen 0 1280x720x24' ";
+    AppRun r = runOnce("xvfb-run -n " + std::to_string(100 + ::getpid() % 800) + " -a " + screen, args);
+    if (r.output.find("Xvfb failed to start") != std::string::npos || r.output.find("cannot open") != std::string::npos)
+        r = runOnce("xvfb-run -a " + screen, args);
     return r;
 }
 
