@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -43,6 +44,8 @@ namespace clothtear::app {
 namespace {
 
 std::string g_glfwError; // last GLFW error, for the one-line messages (GLFW reports through a C callback)
+// Ctrl+C or kill in the terminal ends the loop normally, so --record and --json files are still written.
+volatile std::sig_atomic_t g_stopRequested = 0;
 
 constexpr int kWindowWidth = 1280, kWindowHeight = 720;
 
@@ -87,9 +90,11 @@ int App::run(const CliOptions& options) {
     if (options.frames >= 0) limit = uint64_t(options.frames);
     else if (replaying_) limit = script_.lastFrame() + 1;
     const auto start = std::chrono::steady_clock::now();
+    std::signal(SIGINT, [](int) { g_stopRequested = 1; });
+    std::signal(SIGTERM, [](int) { g_stopRequested = 1; });
     if (options.frames != 0) {
         for (uint64_t f = 0;; ++f) {
-            const bool closing = glfwWindowShouldClose(window_) || state_.quit;
+            const bool closing = glfwWindowShouldClose(window_) || state_.quit || g_stopRequested;
             const bool last = closing || (limit && f + 1 >= limit);
             frame(last);
             if (last) break;

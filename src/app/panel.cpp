@@ -266,8 +266,11 @@ void drawToolHud(const AppState& st, const World& world, const View& view, float
     const ImU32 wind = IM_COL32(90, 170, 255, 200), impulse = IM_COL32(255, 190, 60, 200);
     if (!overUi && (st.tool == Tool::Wind || st.tool == Tool::Impulse))
         dl->AddCircle(ImVec2(mx, my), st.tools.radiusPx, st.tool == Tool::Wind ? wind : impulse, 48, 1.5f);
-    if (st.tool == Tool::Wind && !overUi)
-        dl->AddText(ImVec2(mx + 10.f, my + 10.f), wind, (std::to_string(int(st.tools.windPressure + 0.5f)) + " Pa").c_str());
+    if (st.tool == Tool::Wind && !overUi) {
+        const std::string label = std::to_string(int(st.tools.windPressure + 0.5f)) + " Pa";
+        dl->AddText(ImVec2(mx + 11.f, my + 11.f), IM_COL32(0, 0, 0, 200), label.c_str());
+        dl->AddText(ImVec2(mx + 10.f, my + 10.f), IM_COL32(255, 255, 255, 255), label.c_str());
+    }
     if (st.tools.windFixed) {
         const Vec2& c = st.windSource.center;
         dl->AddCircle(ImVec2(c.x(), c.y()), st.tools.radiusPx, wind, 48, 2.5f);
