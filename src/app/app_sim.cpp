@@ -47,7 +47,13 @@ void App::simulate(double realSeconds) {
     } else {
         steps = state_.clock.advance(realSeconds, world_.settings.time.frameDt);
     }
-    for (int i = 0; i < steps; ++i) stepOnce();
+    for (int i = 0; i < steps && world_.finite; ++i) stepOnce();
+    // A blown-up state only gets slower to step (NaN springs tear without end): stop and say so.
+    if (!world_.finite && !state_.paused) {
+        state_.paused = true;
+        state_.say("The simulation blew up (" + world_.nonFiniteWhere + "): paused. R resets the cloth; " +
+                   "Defaults restores safe parameters.");
+    }
 }
 
 void App::stepOnce() {
