@@ -375,11 +375,12 @@ void World::phaseLimit(float dt) {
         int violated = 0;
         parallelRegion(n, threads, [&](int t, int nt) {
             const Chunk pc = chunkOf(n, t, nt);
-            for (size_t p = pc.begin; p < pc.end; ++p) {
-                acc[t][p].setZero();
-                cnt[t][p] = 0.f;
-            }
-            // Other threads' buffers are cleared by their owners before anyone scatters.
+            // Every thread's buffer over this thread's particles (any thread may scatter anywhere).
+            for (size_t p = pc.begin; p < pc.end; ++p)
+                for (int k = 0; k < nt; ++k) {
+                    acc[k][p].setZero();
+                    cnt[k][p] = 0.f;
+                }
 #if CLOTHTEAR_HAVE_OPENMP
             if (nt > 1) {
 #pragma omp barrier

@@ -1,0 +1,107 @@
+// Google Benchmark cases for the step. Every case runs the `curtain` scene hanging at rest (settled
+// for 1.5 simulated seconds first), with a material capped to be stable at its resolution (see
+// bench_scene.h). Timings are wall clock (UseRealTime): the step uses OpenMP threads.
+//
+//   BM_Substep/RES/TEAR/THREADS   one sub-step; springs/s counts structural + bend-shear springs
+//   BM_Phases/RES/THREADS         per-phase ms of one sub-step, from World::profile
+//   BM_Frame/RES/THREADS          one 1/60 s frame (10 sub-steps + bookkeeping); sim_s/s > 1 is
+//                                 faster than real time
+//
+// Recommended: clothtear_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "bench_scene.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#if CLOTHTEAR_HAVE_OPENMP
+#include <omp.h>
+#endif
+
+namespace clothtear::bench {
+namespace {
+
+// Sets the OpenMP thread count for one benchmark case and restores it afterwards.
+class ThreadScope {
+public:
+    explicit ThreadScope(int threads) {
+#if CLOTHTEAR_HAVE_OPENMP
+        previous_ = omp_get_max_threads();
+        omp_set_num_threads(threads);
+#else
+        (void)threads;
+#endif
+    }
+    ~ThreadScope() {
+#if CLOTHTEAR_HAVE_OPENMP
+        omp_set_num_threads(previous_);
+#endif
+    }
+    ThreadScope(const ThreadScope&) = delete;
+    ThreadScope& operator=(const ThreadScope&) = delete;
+
+private:
+    int previous_ = 1;
+};
+
+void commonCounters(benchmark::State& state, const World& w) {
+    state.counters["particles"] = double(w.cloth.particleCount());
+    state.counters["max_strain"] = maxStructuralStrain(w);
+    state.counters["finite"] = w.finite && std::isfinite(maxStructuralStrain(w)) ? 1 : 0;
+}
+
+void BM_Substep(benchmark::State& state) {
+    const int res = int(state.range(0));
+    const bool tearing = state.range(1) != 0;
+    ThreadScope threads(int(state.range(2)));
+    World w = settledCurtain({res, tearing});
+    state.SetLabel(describeMaterial(w));
+    for (auto _ : state) {
+        w.substep();
+        benchmark::ClobberMemory();
+    }
+    const double springs = double(w.cloth.springs.size() + w.cloth.bends.size());
+    state.counters["springs/s"] = benchmark::Counter(springs, benchmark::Counter::kIsIterationInvariantRate);
+    commonCounters(state, w);
+}
+
+void BM_Phases(benchmark::State& state) {
+    const int res = int(state.range(0));
+    ThreadScope threads(int(state.range(1)));
+    World w = settledCurtain({res, true});
+    for (auto _ : state) {
+        w.substep();
+        benchmark::ClobberMemory();
+    }
+    const StepProfile& p = w.profile;
+    for (int i = 0; i < int(Phase::Count); ++i) {
+        if (p.runs[i] == 0) continue;
+        state.counters[std::string(phaseName(Phase(i))) + "_ms"] = p.ms[i] / double(p.substeps);
+    }
+    commonCounters(state, w);
+}
+
+void BM_Frame(benchmark::State& state) {
+    const int res = int(state.range(0));
+    ThreadScope threads(int(state.range(1)));
+    World w = settledCurtain({res, true});
+    for (auto _ : state) {
+        w.step();
+        benchmark::ClobberMemory();
+    }
+    state.counters["sim_s/s"] =
+        benchmark::Counter(w.settings.time.frameDt, benchmark::Counter::kIsIterationInvariantRate);
+    commonCounters(state, w);
+}
+
+BENCHMARK(BM_Substep)
+    ->ArgNames({"res", "tear", "threads"})
+    ->ArgsProduct({{64, 128, 256}, {0, 1}, {1, 2}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Phases)->ArgNames({"res", "threads"})->ArgsProduct({{64, 128, 256}, {1, 2}})->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Frame)->ArgNames({"res", "threads"})->ArgsProduct({{256}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace clothtear::bench
+
+BENCHMARK_MAIN();
