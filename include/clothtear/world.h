@@ -42,13 +42,42 @@ struct Driver {
     Vec3 velocity = Vec3::Zero(); // m/s
 };
 
+// Per-topology data of the limit phase (world.cpp [LIMIT], src/core/tethers.h), rebuilt when the
+// topology or the set of anchors changes, and its per-sub-step work arrays.
+struct LimitCache {
+    // Tethers (long-range attachments).
+    std::vector<Index> anchor; // per particle: the pinned particle it hangs from, kNone if none
+    std::vector<float> length; // m, per particle: rest length of the spring path to the anchor
+    std::vector<Index> parent; // per particle: previous particle on that path (kNone for anchors)
+    std::vector<Index> order;  // particles reached, breadth-first from the anchors (parents first)
+    uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
+    // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]).
+    std::vector<uint32_t> springStart;
+    std::vector<Index> springOf;
+    uint64_t key = ~uint64_t(0); // what this was built for (topology revision, anchors); ~0: stale
+    // Work arrays, sized with the cloth.
+    std::vector<uint8_t> cut;    // per particle: its tether path runs through a tearing spring
+    std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
+    std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
+    uint32_t stamp = 0;          // last pass stamp used
+};
+
 // Work arrays of the step, kept between steps so the step does not allocate.
 struct StepScratch {
     std::vector<Vec3> force;                  // per particle
-    std::vector<std::vector<Vec3>> threadAcc; // per thread scatter buffers
+    std::vector<std::vector<Vec3>> threadAcc; // per thread scatter buffers, all zero between sub-steps
     std::vector<std::vector<float>> threadCount;
     std::vector<Vec3> correction;
     std::vector<TearCandidate> tearCandidates; // springs over their tear threshold, from the strain scan
+    // Hot-loop state (world.cpp, [SPRINGS] and [LIMIT]).
+    std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its buffer may hold
+    std::vector<std::vector<Eigen::Vector4f>> threadCorr; // per thread: limit corrections (xyz, count)
+    std::vector<std::vector<Index>> threadActive;   // per thread: springs the limit still works on
+    std::vector<std::vector<Index>> threadTouched;  // per thread: particles with a correction this pass
+    std::vector<std::vector<Index>> threadMoved;    // per thread: particles the last Jacobi pass moved
+    std::vector<std::vector<TearCandidate>> threadFound;
+    uint64_t pinSignature = 0; // hash of the particles with invMass 0, from the last integration
+    LimitCache limit;
 };
 
 class World {
@@ -96,6 +125,7 @@ private:
     void phaseTear();
     void phaseBookkeeping();
     void moveDrivers(float dt);
+    void refreshLimitCache();
 };
 
 } // namespace clothtear

@@ -1,6 +1,7 @@
 // Tiny helpers over OpenMP: a fixed, deterministic split of [0, n) into one contiguous chunk per
 // thread. Kernels scatter into per-thread buffers, so results never depend on thread timing.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #if CLOTHTEAR_HAVE_OPENMP
 #include <omp.h>
@@ -13,6 +14,20 @@ inline int maxThreads() {
     return omp_get_max_threads();
 #else
     return 1;
+#endif
+}
+
+// Most threads a step uses (per-thread results live in fixed arrays of this size).
+inline constexpr int kMaxThreadSlots = 64;
+
+// Waits for every thread of the enclosing parallelRegion (call it from all of them or from none).
+inline void parallelBarrier(int threads) {
+#if CLOTHTEAR_HAVE_OPENMP
+    if (threads > 1) {
+#pragma omp barrier
+    }
+#else
+    (void)threads;
 #endif
 }
 

@@ -12,6 +12,7 @@
 #include "clothtear/tear.h"
 #include "collide.h"
 #include "parallel.h"
+#include "tethers.h"
 
 #include <algorithm>
 #include <chrono>
@@ -43,7 +44,7 @@ private:
 };
 
 // Threads worth using for a cloth of n particles (forking costs a few microseconds).
-int threadsFor(size_t particles) { return particles >= 2048 ? maxThreads() : 1; }
+int threadsFor(size_t particles) { return particles >= 2048 ? std::min(maxThreads(), kMaxThreadSlots) : 1; }
 
 // Spring force along the spring (Hooke + damping of the relative velocity along it), on particle a:
 //   f = (k (L - L0) + kd (v_b - v_a).n) n,  n = (x_b - x_a) / L;  particle b gets -f.
@@ -183,31 +184,51 @@ void World::substep() {
 
 // =========================================================================================== [FORCES]
 
-// External per-particle forces, and clearing the per-thread scatter buffers.
-// Air friction, physical model: F = -c A v with A the particle's area share, so a = -(c / density) v
-// whatever the resolution. (Keserica's "10% per step" model is applied in the integrator instead.)
+// Gravity and air friction are applied in the integrator, per particle, where the velocity is read
+// anyway (a = g - (c / density) v: physical drag F = -c A v with A the particle's area share, the
+// same acceleration at any resolution; Keserica's "10% per step" model is a factor there too).
+// This phase only sizes the per-thread scatter buffers. They are zero between sub-steps: the
+// integrator clears every entry it reads, so nothing here touches all particles.
 void World::phaseForces(float /*dt*/) {
     const size_t n = cloth.particleCount();
-    const int threads = threadsFor(n);
-    scratch_.force.resize(n);
-    scratch_.threadAcc.resize(threads);
-    for (auto& acc : scratch_.threadAcc) acc.resize(n);
-    const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
-    const float dragPerMass = settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f;
-    Vec3* force = scratch_.force.data();
-    const Vec3* v = cloth.v.data();
+    const size_t threads = size_t(threadsFor(n));
     auto& acc = scratch_.threadAcc;
-    parallelRegion(n, threads, [&](int t, int nt) {
-        const Chunk c = chunkOf(n, t, nt);
-        for (size_t p = c.begin; p < c.end; ++p) {
-            force[p] = g - dragPerMass * v[p]; // stored as acceleration from external forces
-            for (auto& buffer : acc) buffer[p].setZero();
-        }
-    });
+    if (acc.size() != threads) acc.resize(threads);
+    for (auto& buffer : acc)
+        if (buffer.size() != n) buffer.resize(n, Vec3::Zero());
+    scratch_.threadRange.assign(threads, {n, 0});
 }
 
-// Structural and bend-shear springs, scattered into per-thread buffers (one contiguous chunk of
-// springs per thread), summed in the integrator.
+namespace {
+
+// Hooke + damping along each spring of [begin, end), scattered into `acc`; widens [lo, hi) to the
+// particles touched. Stability guard (see phaseSprings) when Guard.
+template <bool Guard>
+void springKernel(const Spring* springs, size_t begin, size_t end, const Vec3* x, const Vec3* v, const float* invMass,
+                  float ks, float kd, float kCap, float kdCap, Vec3* acc, size_t& lo, size_t& hi) {
+    for (size_t i = begin; i < end; ++i) {
+        const Spring& s = springs[i];
+        float k = ks * s.weight, damping = kd * s.weight;
+        if constexpr (Guard) {
+            const float w = invMass[s.a] + invMass[s.b];
+            if (k * w > kCap) k = kCap / w;
+            if (damping * w > kdCap) damping = kdCap / w;
+        }
+        const Vec3 f = springForce(x[s.a], x[s.b], v[s.a], v[s.b], s.rest, k, damping);
+        acc[s.a] += f;
+        acc[s.b] -= f;
+        lo = std::min<size_t>(lo, std::min(s.a, s.b));
+        hi = std::max<size_t>(hi, std::max(s.a, s.b) + 1);
+    }
+}
+
+} // namespace
+
+// Structural and bend-shear springs, scattered into per-thread buffers, summed in the integrator.
+// Each thread takes the same share of both arrays (one contiguous chunk of each) and records the
+// particle range its chunks touch, so the integrator reads (and clears)
+// only the buffers that can hold something for a particle. Springs are built in mesh order, so a
+// thread's chunk touches a band of the cloth and the bands of two threads overlap in a few rows.
 //
 // Stability guard (time.stability_guard, on by default): explicit integration of a spring is stable
 // only while k (1/m_a + 1/m_b) dt^2 stays small. Tearing halves triangles again and again (a midpoint
@@ -220,30 +241,28 @@ void World::phaseSprings(float dt) {
     const size_t n = cloth.particleCount();
     const int threads = int(scratch_.threadAcc.size());
     const MaterialSettings& m = settings.material;
+    const size_t ns = cloth.springs.size();
+    const size_t nb = (m.bendStiffness > 0.f || m.bendDamping > 0.f) ? cloth.bends.size() : 0;
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
     const float* invMass = cloth.invMass.data();
     const bool guard = settings.time.stabilityGuard;
     const float kCap = 1.f / (3.f * dt * dt), kdCap = 1.f / (6.f * dt);
-    auto scatter = [&](const std::vector<Spring>& springs, float ks, float kd, Vec3* acc, Chunk c) {
-        for (size_t i = c.begin; i < c.end; ++i) {
-            const Spring& s = springs[i];
-            float k = ks * s.weight, damping = kd * s.weight;
-            if (guard) {
-                const float w = invMass[s.a] + invMass[s.b];
-                if (k * w > kCap) k = kCap / w;
-                if (damping * w > kdCap) damping = kdCap / w;
-            }
-            const Vec3 f = springForce(x[s.a], x[s.b], v[s.a], v[s.b], s.rest, k, damping);
-            acc[s.a] += f;
-            acc[s.b] -= f;
-        }
-    };
-    parallelRegion(n, threads, [&](int t, int nt) {
+    auto* ranges = scratch_.threadRange.data();
+    parallelRegion(ns + nb, threads, [&](int t, int nt) {
         Vec3* acc = scratch_.threadAcc[t].data();
-        scatter(cloth.springs, m.stretchStiffness, m.stretchDamping, acc, chunkOf(cloth.springs.size(), t, nt));
-        if (m.bendStiffness > 0.f || m.bendDamping > 0.f)
-            scatter(cloth.bends, m.bendStiffness, m.bendDamping, acc, chunkOf(cloth.bends.size(), t, nt));
+        size_t lo = n, hi = 0;
+        auto run = [&](const std::vector<Spring>& springs, size_t b, size_t e, float ks, float kd) {
+            if (b >= e) return;
+            if (guard)
+                springKernel<true>(springs.data(), b, e, x, v, invMass, ks, kd, kCap, kdCap, acc, lo, hi);
+            else
+                springKernel<false>(springs.data(), b, e, x, v, invMass, ks, kd, kCap, kdCap, acc, lo, hi);
+        };
+        const Chunk cs = chunkOf(ns, t, nt), cb = chunkOf(nb, t, nt);
+        run(cloth.springs, cs.begin, cs.end, m.stretchStiffness, m.stretchDamping);
+        run(cloth.bends, cb.begin, cb.end, m.bendStiffness, m.bendDamping);
+        ranges[t] = {lo, hi};
     });
 }
 
@@ -261,6 +280,7 @@ void World::phaseWind() {
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
     const int threads = int(scratch_.threadAcc.size());
+    for (auto& r : scratch_.threadRange) r = {0, cloth.particleCount()}; // wind may touch any particle
     parallelRegion(cloth.triangles.size(), threads, [&](int t, int nt) {
         Vec3* acc = scratch_.threadAcc[t].data();
         const Chunk c = chunkOf(cloth.triangles.size(), t, nt);
@@ -289,7 +309,73 @@ void World::moveDrivers(float dt) {
         }
 }
 
-// a = external acceleration + (sum of spring and wind forces) / m.
+namespace {
+
+// Order-independent hash of a particle index (summed over the pinned particles: pinSignature).
+inline uint64_t hashIndex(uint64_t p) {
+    p = (p + 0x9e3779b97f4a7c15ull) * 0xbf58476d1ce4e5b9ull;
+    return (p ^ (p >> 31)) * 0x94d049bb133111ebull;
+}
+
+struct IntegrateParams {
+    Vec3 g;            // m/s^2
+    float dragPerMass; // 1/s
+    float keep;        // Keserica: velocity kept per step
+    float verletKeep;  // Verlet: 1 - friction
+    float dt;
+};
+
+// One chunk of particles: sums and clears the scatter buffers, then integrates. Returns the hash
+// sum of the pinned particles met.
+template <Integrator I>
+uint64_t integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Vec3* xPrev, const float* invMass,
+                         std::vector<std::vector<Vec3>>& acc, const std::array<size_t, 2>* ranges) {
+    uint64_t pinned = 0;
+    // The buffers that can hold forces for this chunk.
+    Vec3* buf[8];
+    std::array<size_t, 2> range[8];
+    int nbuf = 0;
+    for (size_t k = 0; k < acc.size(); ++k)
+        if (ranges[k][0] < c.end && ranges[k][1] > c.begin && nbuf < 8) {
+            buf[nbuf] = acc[k].data();
+            range[nbuf++] = {std::max(ranges[k][0], c.begin), std::min(ranges[k][1], c.end)};
+        } else if (ranges[k][0] < c.end && ranges[k][1] > c.begin) {
+            // More than 8 threads: clear the rest here (never happens on the machines we target).
+            for (size_t p = std::max(ranges[k][0], c.begin); p < std::min(ranges[k][1], c.end); ++p)
+                acc[k][p].setZero();
+        }
+    for (size_t p = c.begin; p < c.end; ++p) {
+        Vec3 f = Vec3::Zero();
+        for (int k = 0; k < nbuf; ++k)
+            if (p >= range[k][0] && p < range[k][1]) {
+                f += buf[k][p];
+                buf[k][p].setZero();
+            }
+        const float w = invMass[p];
+        if (w == 0.f) {
+            pinned += hashIndex(p);
+            continue;
+        }
+        const Vec3 a = P.g - P.dragPerMass * v[p] + f * w;
+        if constexpr (I == Integrator::SemiImplicitEuler) {
+            v[p] = (v[p] + a * P.dt) * P.keep;
+            x[p] += v[p] * P.dt;
+        } else if constexpr (I == Integrator::ForwardEuler) {
+            x[p] += v[p] * P.dt;
+            v[p] = (v[p] + a * P.dt) * P.keep;
+        } else {
+            const Vec3 next = x[p] + P.verletKeep * P.keep * (x[p] - xPrev[p]) + a * (P.dt * P.dt);
+            xPrev[p] = x[p];
+            x[p] = next;
+            v[p] = (next - xPrev[p]) / P.dt;
+        }
+    }
+    return pinned;
+}
+
+} // namespace
+
+// a = external acceleration (gravity, air drag) + (sum of spring and wind forces) / m.
 //   semi-implicit Euler (Onal 2.1):  v += a dt;  x += v dt
 //   forward Euler:                   x += v dt;  v += a dt
 //   Verlet (Keserica 2.2.1):         x' = x + (1 - f)(x - x_prev) + a dt^2;  v = (x' - x) / dt
@@ -297,45 +383,157 @@ void World::moveDrivers(float dt) {
 void World::phaseIntegrate(float dt) {
     const size_t n = cloth.particleCount();
     const int threads = int(scratch_.threadAcc.size());
-    const Integrator integrator = settings.time.integrator;
-    const float keep = settings.air.model == AirModel::Keserica ? 1.f - settings.air.kesericaFactor : 1.f;
-    const float verletKeep = 1.f - settings.time.verletFriction;
+    IntegrateParams P;
+    P.g = Vec3(settings.gravity.x, settings.gravity.y, settings.gravity.z);
+    P.dragPerMass = settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f;
+    P.keep = settings.air.model == AirModel::Keserica ? 1.f - settings.air.kesericaFactor : 1.f;
+    P.verletKeep = 1.f - settings.time.verletFriction;
+    P.dt = dt;
     Vec3* x = cloth.x.data();
     Vec3* v = cloth.v.data();
     Vec3* xPrev = cloth.xPrev.data();
     const float* invMass = cloth.invMass.data();
-    const Vec3* ext = scratch_.force.data();
     auto& acc = scratch_.threadAcc;
+    const auto* ranges = scratch_.threadRange.data();
+    uint64_t pinned[kMaxThreadSlots] = {};
     parallelRegion(n, threads, [&](int t, int nt) {
         const Chunk c = chunkOf(n, t, nt);
-        for (size_t p = c.begin; p < c.end; ++p) {
-            if (invMass[p] == 0.f) continue;
-            Vec3 f = acc[0][p];
-            for (size_t k = 1; k < acc.size(); ++k) f += acc[k][p];
-            const Vec3 a = ext[p] + f * invMass[p];
-            switch (integrator) {
-            case Integrator::SemiImplicitEuler:
-                v[p] = (v[p] + a * dt) * keep;
-                x[p] += v[p] * dt;
-                break;
-            case Integrator::ForwardEuler:
-                x[p] += v[p] * dt;
-                v[p] = (v[p] + a * dt) * keep;
-                break;
-            case Integrator::Verlet: {
-                const Vec3 next = x[p] + verletKeep * keep * (x[p] - xPrev[p]) + a * (dt * dt);
-                xPrev[p] = x[p];
-                x[p] = next;
-                v[p] = (next - xPrev[p]) / dt;
-                break;
-            }
-            }
+        uint64_t h = 0;
+        switch (settings.time.integrator) {
+        case Integrator::SemiImplicitEuler:
+            h = integrateKernel<Integrator::SemiImplicitEuler>(c, P, x, v, xPrev, invMass, acc, ranges);
+            break;
+        case Integrator::ForwardEuler:
+            h = integrateKernel<Integrator::ForwardEuler>(c, P, x, v, xPrev, invMass, acc, ranges);
+            break;
+        case Integrator::Verlet:
+            h = integrateKernel<Integrator::Verlet>(c, P, x, v, xPrev, invMass, acc, ranges);
+            break;
         }
+        pinned[t % kMaxThreadSlots] += h;
     });
+    uint64_t signature = n;
+    for (uint64_t h : pinned) signature += h;
+    scratch_.pinSignature = signature;
     moveDrivers(dt);
 }
 
 // ============================================================================================ [LIMIT]
+
+namespace {
+
+inline float sq(float a) { return a * a; }
+
+// Springs within this fraction over their limit count as done: at rest every vertical spring sits
+// at the limit, and without a tolerance half of them would be "violated" by round-off each pass.
+constexpr float kLimitTolerance = 1e-3f;
+
+// What a limit pass needs, fixed for the sub-step.
+struct LimitParams {
+    float maxRatio;      // 1 + max_stretch
+    float tearRatio;     // 1 + tear threshold (1e30 without tearing)
+    float weakRatio;     // 1 + the lowest threshold for weak points and one-point connections
+    float relaxation;
+    float dt;
+    bool limiting;       // limit.enabled with iterations > 0 (else: strain scan only)
+    bool velocityFix;    // not for Verlet, which derives v from x
+};
+
+// Corrections of one thread: xyz sum and the number of springs in w.
+using Corr = Eigen::Vector4f;
+
+// Provot correction of spring s (longer than maxLen), split by inverse mass, into `corr`.
+// Pinned ends get nothing (not even a count), so the limit never writes a pinned particle: the
+// tethers read their anchors while other threads apply corrections. False if both ends are pinned.
+// Particles getting their first correction of the pass go on `touched`.
+inline bool addCorrection(const Spring& s, const Vec3& d, float len2, float maxLen, const float* invMass, Corr* corr,
+                          std::vector<Index>& touched) {
+    const float wa = invMass[s.a], wb = invMass[s.b];
+    if (wa + wb == 0.f) return false;
+    const float len = std::sqrt(len2);
+    const Vec3 c = d * ((len - maxLen) / (len * (wa + wb)));
+    if (wa > 0.f) {
+        if (corr[s.a].w() == 0.f) touched.push_back(s.a);
+        corr[s.a] += Corr(wa * c.x(), wa * c.y(), wa * c.z(), 1.f);
+    }
+    if (wb > 0.f) {
+        if (corr[s.b].w() == 0.f) touched.push_back(s.b);
+        corr[s.b] += Corr(-wb * c.x(), -wb * c.y(), -wb * c.z(), 1.f);
+    }
+    return true;
+}
+
+// Moves particle p by delta. Inelastic velocity fix: cancel the velocity that carried p away from
+// where the limit puts it, up to |delta| / dt, but never add velocity towards it. (Turning the whole
+// correction into velocity, as v += delta / dt would, injects energy when a long overstretched
+// spring is pulled back and sets off tear cascades.) dir * min(|delta| / dt, away) with
+// dir = delta / |delta|, away = -v.dir, is delta * min(1 / dt, -v.delta / |delta|^2): no square root.
+inline void moveParticle(Vec3& x, Vec3& v, const Vec3& delta, const LimitParams& P) {
+    x += delta;
+    if (!P.velocityFix) return;
+    const float away = -v.dot(delta);
+    if (away > 0.f) v += delta * std::min(1.f / P.dt, away / delta.squaredNorm());
+}
+
+// Applies the averaged corrections of the particles on the `touched` lists of threads [0, nt) that
+// `mine` accepts (each particle is accepted by exactly one caller), clears what it read (the
+// buffers are zero between passes), and lists the particles it moved in `moved`, stamped in movedIn.
+template <class Mine>
+inline void applyCorrections(const std::vector<std::vector<Index>>& touched, std::vector<std::vector<Corr>>& corr,
+                             int nt, Mine mine, Vec3* x, Vec3* v, const LimitParams& P, uint32_t* movedIn,
+                             uint32_t stamp, std::vector<Index>& moved) {
+    for (int k = 0; k < nt; ++k)
+        for (Index p : touched[k]) {
+            if (!mine(p) || corr[k][p].w() == 0.f) continue; // not ours, or done from an earlier list
+            Corr sum = corr[k][p];
+            corr[k][p].setZero();
+            for (int j = k + 1; j < nt; ++j) {
+                sum += corr[j][p];
+                corr[j][p].setZero();
+            }
+            moveParticle(x[p], v[p], sum.head<3>() * (P.relaxation / sum.w()), P);
+            movedIn[p] = stamp;
+            moved.push_back(p);
+        }
+}
+
+// Pulls particle p back onto the sphere of radius maxRatio * length around its anchor.
+inline bool tetherParticle(size_t p, const LimitCache& T, const float* invMass, const uint8_t* cut, Vec3* x, Vec3* v,
+                           const LimitParams& P, bool& stale) {
+    const Index a = T.anchor[p];
+    if (a == kNone || a == p || invMass[p] == 0.f || (cut && cut[p])) return false;
+    if (invMass[a] != 0.f) {
+        stale = true; // the anchor was unpinned: rebuild before the next use
+        return false;
+    }
+    const Vec3 d = x[p] - x[a];
+    const float maxLen = P.maxRatio * T.length[p];
+    const float len2 = d.squaredNorm();
+    if (len2 <= maxLen * maxLen) return false;
+    moveParticle(x[p], v[p], d * (maxLen / std::sqrt(len2) - 1.f), P);
+    return true;
+}
+
+} // namespace
+
+// Rebuilds the limit cache when the topology, the pinned particles or the drivers changed. Tether
+// anchors are the pinned particles that no driver moves: a tether to a moving clamp would drag the
+// cloth along with it and put all the stretch at the border between the clamp's particles and the
+// others.
+void World::refreshLimitCache() {
+    LimitCache& C = scratch_.limit;
+    uint64_t key = hashIndex(cloth.topologyRevision) + hashIndex(scratch_.pinSignature ^ 0x5bd1e995u);
+    for (const Driver& d : drivers)
+        for (Index p : d.particles) key += hashIndex(uint64_t(p) << 20 | 7u);
+    if (key == C.key && C.anchor.size() == cloth.particleCount() && C.listed.size() == cloth.springs.size()) return;
+    std::vector<uint8_t> anchor(cloth.particleCount(), 0);
+    for (Index p = 0; p < cloth.particleCount(); ++p) anchor[p] = cloth.invMass[p] == 0.f;
+    for (const Driver& d : drivers)
+        for (Index p : d.particles)
+            if (p < anchor.size()) anchor[p] = 0;
+    buildLimitCache(cloth, anchor, C);
+    C.key = key;
+}
 
 // Provot length limiting (Onal 2.1.1): a spring longer than rest * (1 + maxStretch) pulls its ends
 // together, split by inverse mass; pinned ends never move. Corrections are averaged per particle
@@ -345,117 +543,216 @@ void World::phaseIntegrate(float dt) {
 // or above its tear threshold (the tear phase's candidates) and skips them. If there are more than
 // tear.max_per_step candidates, only the most strained max_per_step are exempt; the later passes
 // limit the others, so a spring is never left unlimited without being torn (that ran away).
+//
+// Order and cost. (1) The strain scan reads every structural spring once; most leave after one
+// squared-length compare (no square root). (2) The tethers (tethers.h) pull every particle back
+// within reach of its anchor: what the Jacobi passes cannot carry across a large cloth in a dozen
+// passes. A tether whose path runs through a tear candidate does not pull this sub-step; the scan
+// comes first so that a spring reaching its threshold is seen before anything pulls it back.
+// (3) A second scan lists the springs over the limit (tethers stretch some between particles they
+// move by different amounts). (4) The Jacobi passes work on that list only, drop the springs back
+// within the limit (to a tolerance of 0.1% of the limit) and stop when none is left.
 void World::phaseLimit(float dt) {
     const size_t n = cloth.particleCount();
     const size_t ns = cloth.springs.size();
     const int threads = int(scratch_.threadAcc.size());
     const LimitSettings& L = settings.limit;
-    const TearSettings& T = settings.tear;
-    const bool limiting = L.enabled && L.iterations > 0;
-    const float maxRatio = 1.f + L.maxStretch;
-    const float tearRatio = T.enabled ? 1.f + T.threshold : 1e30f;
+    const TearSettings& TS = settings.tear;
+    LimitParams P;
+    P.limiting = L.enabled && L.iterations > 0;
+    P.maxRatio = 1.f + L.maxStretch;
+    P.tearRatio = TS.enabled ? 1.f + TS.threshold : 1e30f;
     // Weak points and one-point connections tear at their own (lower) thresholds (Onal 3.2.2, 3.2.3).
-    const float weakRatio = T.enabled ? 1.f + std::min({T.weakThreshold, T.onePointThreshold, T.threshold}) : 1e30f;
-    const bool velocityFix = settings.time.integrator != Integrator::Verlet; // Verlet derives v from x
+    P.weakRatio = TS.enabled ? 1.f + std::min({TS.weakThreshold, TS.onePointThreshold, TS.threshold}) : 1e30f;
+    P.relaxation = L.relaxation;
+    P.dt = dt;
+    P.velocityFix = settings.time.integrator != Integrator::Verlet;
+    const float minTearRatio = std::min(P.tearRatio, P.weakRatio);
+    const float doneRatio = P.maxRatio * (1.f + kLimitTolerance);
+    // Lists shorter than this are worked by one thread (a barrier costs more than the work).
+    constexpr size_t kSerialList = 2048;
+
     Vec3* x = cloth.x.data();
     Vec3* v = cloth.v.data();
     const float* invMass = cloth.invMass.data();
     const uint8_t* flags = cloth.flags.data();
     const Spring* springs = cloth.springs.data();
-    scratch_.threadCount.resize(threads);
-    for (auto& c : scratch_.threadCount) c.resize(n);
-    auto& acc = scratch_.threadAcc;
-    auto& cnt = scratch_.threadCount;
+    auto& corr = scratch_.threadCorr;
+    auto& active = scratch_.threadActive;
+    auto& moved = scratch_.threadMoved;
+    auto& touched = scratch_.threadTouched;
+    auto& found = scratch_.threadFound;
+    if (corr.size() != size_t(threads)) corr.resize(threads);
+    for (auto& c : corr)
+        if (c.size() != n) c.resize(n, Corr::Zero());
+    active.resize(threads);
+    moved.resize(threads);
+    touched.resize(threads);
+    found.resize(threads);
+    for (int t = 0; t < threads; ++t) {
+        active[t].clear();
+        moved[t].clear();
+        found[t].clear();
+    }
+    if (P.limiting) refreshLimitCache();
+    LimitCache& C = scratch_.limit;
+    uint8_t* listed = P.limiting ? C.listed.data() : nullptr;
+    uint32_t* movedIn = P.limiting ? C.moved.data() : nullptr;
+    const bool useTethers = P.limiting && C.depth > kTetherDepthPerPass * uint32_t(L.iterations);
+    const uint32_t stamp0 = C.stamp;
+    if (P.limiting) C.stamp += uint32_t(L.iterations);
 
-    // Tear candidates of this sub-step, per thread then merged in thread order (deterministic).
-    std::vector<std::vector<TearCandidate>> found(threads);
-    const int passes = limiting ? L.iterations : 1;
-    float exemptStrain = -1.f; // after pass 0: candidates below this strain are limited after all
-    for (int pass = 0; pass < passes; ++pass) {
-        int violated = 0;
-        parallelRegion(n, threads, [&](int t, int nt) {
-            const Chunk pc = chunkOf(n, t, nt);
-            // Every thread's buffer over this thread's particles (any thread may scatter anywhere).
-            for (size_t p = pc.begin; p < pc.end; ++p)
-                for (int k = 0; k < nt; ++k) {
-                    acc[k][p].setZero();
-                    cnt[k][p] = 0.f;
-                }
-#if CLOTHTEAR_HAVE_OPENMP
-            if (nt > 1) {
-#pragma omp barrier
+    size_t listSize[kMaxThreadSlots] = {};
+    int work[kMaxThreadSlots] = {};
+    bool stale = false;
+    float exemptStrain = -1.f; // with too many candidates: those below this strain are limited
+
+    // Is spring i over its limit (by more than the tolerance)? Exempt if it is a candidate that
+    // tears this sub-step.
+    auto overLimit = [&](const Spring& s, float len2) { return len2 > sq(s.rest * doneRatio); };
+    auto exempt = [&](const Spring& s, float len2) {
+        if (len2 < sq(s.rest * minTearRatio)) return false;
+        const bool weak = (flags[s.a] | flags[s.b]) & (kWeak | kHinge);
+        return len2 >= sq(s.rest * (weak ? P.weakRatio : P.tearRatio)) && std::sqrt(len2) / s.rest - 1.f >= exemptStrain;
+    };
+    // One Jacobi pass over list `l` into buffer c; drops the springs within the limit.
+    auto work1 = [&](std::vector<Index>& l, Corr* c, std::vector<Index>& touched) {
+        int corrected = 0;
+        size_t keep = 0;
+        for (Index i : l) {
+            const Spring& s = springs[i];
+            const Vec3 d = x[s.b] - x[s.a];
+            const float len2 = d.squaredNorm();
+            if (!overLimit(s, len2)) {
+                listed[i] = 0;
+                continue;
             }
-#endif
-            int localViolated = 0;
-            const Chunk c = chunkOf(ns, t, nt);
-            for (size_t i = c.begin; i < c.end; ++i) {
+            l[keep++] = i;
+            if (!exempt(s, len2)) corrected += addCorrection(s, d, len2, s.rest * P.maxRatio, invMass, c, touched);
+        }
+        l.resize(keep);
+        return corrected;
+    };
+    // Lists the springs of the particles in `m` that a pass pushed over the limit. A spring whose
+    // two ends both moved is listed from its lower-numbered end only.
+    auto expand = [&](const std::vector<Index>& m, uint32_t stamp, std::vector<Index>& l) {
+        for (Index p : m)
+            for (uint32_t k = C.springStart[p]; k < C.springStart[p + 1]; ++k) {
+                const Index i = C.springOf[k];
+                if (listed[i]) continue;
                 const Spring& s = springs[i];
-                const Vec3 d = x[s.b] - x[s.a];
-                const float len2 = d.squaredNorm();
-                const float maxLen = s.rest * maxRatio;
+                const Index q = s.a == p ? s.b : s.a;
+                if (q < p && movedIn[q] == stamp) continue;
+                if (overLimit(s, (x[s.b] - x[s.a]).squaredNorm())) {
+                    listed[i] = 1;
+                    l.push_back(i);
+                }
+            }
+    };
+
+    parallelRegion(std::max(ns, n), threads, [&](int t, int nt) {
+        // ---- strain scan: every spring once
+        std::vector<Index>& list = active[t];
+        const Chunk sc = chunkOf(ns, t, nt);
+        for (size_t i = sc.begin; i < sc.end; ++i) {
+            const Spring& s = springs[i];
+            const float len2 = (x[s.b] - x[s.a]).squaredNorm();
+            if (len2 <= sq(s.rest * doneRatio)) continue; // the common case: one compare, no square root
+            if (len2 >= sq(s.rest * minTearRatio)) {
                 const bool weak = (flags[s.a] | flags[s.b]) & (kWeak | kHinge);
-                const float tearLen = s.rest * (weak ? weakRatio : tearRatio);
-                if (pass == 0 && len2 >= tearLen * tearLen)
+                if (len2 >= sq(s.rest * (weak ? P.weakRatio : P.tearRatio)))
                     found[t].push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
-                if (!limiting || len2 <= maxLen * maxLen) continue;
-                if (len2 >= tearLen * tearLen && (pass == 0 || std::sqrt(len2) / s.rest - 1.f >= exemptStrain)) continue;
-                const float wa = invMass[s.a], wb = invMass[s.b];
-                if (wa + wb == 0.f) continue;
-                const float len = std::sqrt(len2);
-                const Vec3 corr = d * ((len - maxLen) / (len * (wa + wb)));
-                acc[t][s.a] += wa * corr;
-                acc[t][s.b] -= wb * corr;
-                cnt[t][s.a] += 1.f;
-                cnt[t][s.b] += 1.f;
-                ++localViolated;
             }
-#if CLOTHTEAR_HAVE_OPENMP
-            if (nt > 1) {
-#pragma omp atomic
-                violated += localViolated;
-#pragma omp barrier
-            } else
-#endif
-                violated += localViolated;
-            if (!limiting) return;
-            for (size_t p = pc.begin; p < pc.end; ++p) {
-                float count = cnt[0][p];
-                Vec3 sum = acc[0][p];
-                for (int k = 1; k < nt; ++k) {
-                    count += cnt[k][p];
-                    sum += acc[k][p];
-                }
-                if (count == 0.f) continue;
-                const Vec3 delta = sum * (L.relaxation / count);
-                x[p] += delta;
-                // Inelastic velocity fix: cancel the velocity that carried p away from where the
-                // limit puts it, up to |delta| / dt, but never add velocity towards it. (Turning the
-                // whole correction into velocity, as v += delta / dt would, injects energy when a
-                // long overstretched spring is pulled back and set off tear cascades.)
-                if (velocityFix) {
-                    const float d = delta.norm();
-                    if (d > 0.f) {
-                        const Vec3 dir = delta / d;
-                        const float away = -v[p].dot(dir);
-                        if (away > 0.f) v[p] += dir * std::min(d / dt, away);
-                    }
-                }
-            }
-        });
-        if (pass == 0) {
-            size_t total = 0;
-            for (const auto& f : found) total += f.size();
-            if (total > size_t(T.maxPerStep)) {
-                std::vector<float> strains;
-                for (const auto& f : found)
-                    for (const TearCandidate& k : f) strains.push_back(k.strain);
-                std::nth_element(strains.begin(), strains.begin() + (T.maxPerStep - 1), strains.end(), std::greater<>());
-                exemptStrain = strains[T.maxPerStep - 1];
-                violated += int(total) - T.maxPerStep; // those still need limiting
+            if (P.limiting) {
+                listed[i] = 1;
+                list.push_back(Index(i));
             }
         }
-        if (violated == 0) break;
-    }
+        if (!P.limiting) return;
+        parallelBarrier(nt); // candidates complete
+
+        // ---- tethers, on this thread's particles: their anchors are pinned, so nothing another
+        // thread does moves what this one reads. First find the tethers that must not pull.
+        size_t candidates = 0;
+        for (int k = 0; k < nt; ++k) candidates += found[k].size();
+        const bool anyFound = candidates > 0;
+        if (anyFound) {
+            if (t == 0) {
+                if (useTethers) {
+                    std::vector<Index> seeds;
+                    for (int k = 0; k < nt; ++k)
+                        for (const TearCandidate& f : found[k]) {
+                            seeds.push_back(springs[f.spring].a);
+                            seeds.push_back(springs[f.spring].b);
+                        }
+                    markTethersThrough(C, seeds, C.cut);
+                }
+                // More candidates than tear.max_per_step: only the most strained are exempt.
+                if (candidates > size_t(TS.maxPerStep)) {
+                    std::vector<float> strains;
+                    for (int k = 0; k < nt; ++k)
+                        for (const TearCandidate& f : found[k]) strains.push_back(f.strain);
+                    std::nth_element(strains.begin(), strains.begin() + (TS.maxPerStep - 1), strains.end(),
+                                     std::greater<>());
+                    exemptStrain = strains[TS.maxPerStep - 1];
+                }
+            }
+            parallelBarrier(nt);
+        }
+        const uint8_t* cut = anyFound ? C.cut.data() : nullptr;
+        const Chunk pc = chunkOf(n, t, nt);
+        bool localStale = false;
+        if (useTethers)
+            for (size_t p = pc.begin; p < pc.end; ++p) tetherParticle(p, C, invMass, cut, x, v, P, localStale);
+        if (localStale) {
+#if CLOTHTEAR_HAVE_OPENMP
+#pragma omp critical(clothtear_tether_stale)
+#endif
+            stale = true;
+        }
+
+        // ---- Jacobi passes over the listed springs, until none is over the limit
+        for (int pass = 0; pass < L.iterations; ++pass) {
+            const uint32_t stamp = stamp0 + uint32_t(pass) + 1;
+            listSize[t] = list.size();
+            parallelBarrier(nt); // lists, positions and listSize[] complete
+            size_t total = 0;
+            for (int k = 0; k < nt; ++k) total += listSize[k];
+            if (total == 0) break;
+            if (total < kSerialList || nt == 1) {
+                // Thread 0 works every list, in thread order, into its own buffer.
+                if (t == 0) {
+                    int corrected = 0;
+                    touched[0].clear();
+                    for (int k = 0; k < nt; ++k) corrected += work1(active[k], corr[0].data(), touched[0]);
+                    moved[0].clear();
+                    applyCorrections(touched, corr, 1, [](Index) { return true; }, x, v, P, movedIn, stamp, moved[0]);
+                    expand(moved[0], stamp, active[0]);
+                    work[0] = corrected;
+                    for (int k = 1; k < nt; ++k) work[k] = 0;
+                }
+            } else {
+                touched[t].clear();
+                work[t] = work1(list, corr[t].data(), touched[t]);
+                parallelBarrier(nt); // corrections complete
+                moved[t].clear();
+                auto mine = [&](Index p) { return p >= pc.begin && p < pc.end; };
+                applyCorrections(touched, corr, nt, mine, x, v, P, movedIn, stamp, moved[t]);
+                parallelBarrier(nt); // positions and stamps complete
+                expand(moved[t], stamp, list);
+            }
+            parallelBarrier(nt); // work[] complete
+            int corrected = 0;
+            for (int k = 0; k < nt; ++k) corrected += work[k];
+            if (corrected == 0) break;
+        }
+        // Springs still listed (iteration cap, exempt candidates) leave their lists.
+        parallelBarrier(nt);
+        for (Index i : list) listed[i] = 0;
+    });
+    if (stale) C.key = ~uint64_t(0);
+
+    // Tear candidates, merged in thread order (deterministic).
     scratch_.tearCandidates.clear();
     for (auto& f : found) scratch_.tearCandidates.insert(scratch_.tearCandidates.end(), f.begin(), f.end());
 }
