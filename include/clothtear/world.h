@@ -51,6 +51,7 @@ struct LimitCache {
     std::vector<Index> parent; // per particle: previous particle on that path (kNone for anchors)
     std::vector<Index> order;  // particles reached, breadth-first from the anchors (parents first)
     uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
+    float meanRest = 0;        // m, mean rest length of the structural springs
     // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]).
     std::vector<uint32_t> springStart;
     std::vector<Index> springOf;
@@ -62,10 +63,30 @@ struct LimitCache {
     uint32_t stamp = 0;          // last pass stamp used
 };
 
+// A particle as the spring kernels read it (src/core/step_kernels.h): position and velocity, each
+// xyz and a zero fourth lane; two to a cache line.
+struct alignas(32) PackedParticle {
+    float x[4];
+    float v[4];
+};
+
+// The springs as the kernels read them (world.cpp [SPRINGS], step_kernels.h): structural, then
+// bend-shear, one array per field, ends as byte offsets (16 * particle), stiffness and damping
+// after the stability guard, in an order that keeps the four springs of a SIMD group apart (see
+// refreshSpringCache). Rebuilt when the topology, the pinned particles, the material or dt change.
+struct SpringCache {
+    std::vector<uint32_t> a16, b16;  // 16 * particle index of the two ends
+    std::vector<Index> index;        // the spring's index in cloth.springs / cloth.bends
+    std::vector<float> rest, k, kd;  // m, N/m, N s/m
+    size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
+    std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
+    uint64_t key = ~uint64_t(0);
+};
+
 // Work arrays of the step, kept between steps so the step does not allocate.
 struct StepScratch {
-    std::vector<Vec3> force;                  // per particle
-    std::vector<std::vector<Vec3>> threadAcc; // per thread scatter buffers, all zero between sub-steps
+    std::vector<Vec3> force; // per particle (unused since the external forces moved into the integrator)
+    std::vector<std::vector<Eigen::Vector4f>> threadAcc; // per thread force buffers (xyz), zero between sub-steps
     std::vector<std::vector<float>> threadCount;
     std::vector<Vec3> correction;
     std::vector<TearCandidate> tearCandidates; // springs over their tear threshold, from the strain scan
@@ -76,7 +97,9 @@ struct StepScratch {
     std::vector<std::vector<Index>> threadTouched;  // per thread: particles with a correction this pass
     std::vector<std::vector<Index>> threadMoved;    // per thread: particles the last Jacobi pass moved
     std::vector<std::vector<TearCandidate>> threadFound;
+    std::vector<PackedParticle> packed; // per particle: x and v for the spring kernels
     uint64_t pinSignature = 0; // hash of the particles with invMass 0, from the last integration
+    SpringCache springs;
     LimitCache limit;
 };
 
@@ -126,6 +149,7 @@ private:
     void phaseBookkeeping();
     void moveDrivers(float dt);
     void refreshLimitCache();
+    void refreshSpringCache(float dt);
 };
 
 } // namespace clothtear

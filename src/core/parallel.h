@@ -42,9 +42,11 @@ inline Chunk chunkOf(size_t n, int thread, int threads) {
 
 // Runs body(thread, threads) on every thread of a parallel region (or once, serially). Small
 // problems run serially: forking threads costs more than a few thousand items.
+inline constexpr size_t kParallelWork = 4096; // smallest amount of work parallelRegion forks for
+
 template <class Body> void parallelRegion(size_t work, int threads, Body&& body) {
 #if CLOTHTEAR_HAVE_OPENMP
-    if (threads > 1 && work >= 4096) {
+    if (threads > 1 && work >= kParallelWork) {
 #pragma omp parallel num_threads(threads)
         body(omp_get_thread_num(), omp_get_num_threads());
         return;

@@ -33,6 +33,9 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     t.order.clear();
     t.order.reserve(n);
     t.depth = 0;
+    double restSum = 0;
+    for (const Spring& s : cloth.springs) restSum += s.rest;
+    t.meanRest = cloth.springs.empty() ? 0.f : float(restSum / double(cloth.springs.size()));
     std::vector<uint32_t> layer(n, ~0u);
     for (Index p = 0; p < n; ++p)
         if (anchor[p]) {

@@ -1,0 +1,237 @@
+// The inner loops of the step's spring phase and strain scan, over flat arrays (world.cpp
+// [SPRINGS], [LIMIT]).
+//
+// Layout. Particles are read from a packed copy, 32 bytes each: position (x, y, z, 0) and velocity
+// (x, y, z, 0), aligned, so one particle is two aligned loads in one cache line. Forces go to
+// 16-byte accumulators (x, y, z, unused). Springs store their ends as byte offsets (16 * particle):
+// the packed copy is at 2 * offset, the accumulator at offset, so no index arithmetic is left in the
+// loop. With SSE2 (every x86-64) four springs are done at once: their square roots and divisions
+// share one instruction each, which is what bounds a scalar loop (a square root and a division per
+// spring). Other targets use the scalar loop, with the same formula.
+#pragma once
+#include "clothtear/world.h" // PackedParticle
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace clothtear {
+
+// Force accumulator of one particle: xyz, w unused.
+using Acc4 = Eigen::Vector4f;
+
+// Springs as the kernels read them: one array per field, ends as byte offsets (16 * particle).
+struct SpringArrays {
+    const uint32_t* a16;
+    const uint32_t* b16;
+    const float* rest; // m
+    const float* k;    // N/m, after the stability guard
+    const float* kd;   // N s/m, after the stability guard
+};
+
+inline const PackedParticle& packedAt(const PackedParticle* xv, uint32_t off16) {
+    return xv[off16 >> 4];
+}
+inline Acc4& accAt(Acc4* acc, uint32_t off16) { return acc[off16 >> 4]; }
+
+// Hooke + damping along spring i, on its first end (the second gets the opposite):
+//   f = (k (L - L0) + kd (v_b - v_a).n) n,   n = (x_b - x_a) / L;   nothing when L is 0.
+inline void springForceScalar(const SpringArrays& s, size_t i, const PackedParticle* xv, Acc4* acc) {
+    const PackedParticle& A = packedAt(xv, s.a16[i]);
+    const PackedParticle& B = packedAt(xv, s.b16[i]);
+    const float dx = B.x[0] - A.x[0], dy = B.x[1] - A.x[1], dz = B.x[2] - A.x[2];
+    const float len = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (!(len > 1e-12f)) return;
+    const float inv = 1.f / len;
+    const float dvd = ((B.v[0] - A.v[0]) * dx + (B.v[1] - A.v[1]) * dy + (B.v[2] - A.v[2]) * dz) * inv;
+    const float f = (s.k[i] * (len - s.rest[i]) + s.kd[i] * dvd) * inv;
+    const Acc4 fv(f * dx, f * dy, f * dz, 0.f);
+    accAt(acc, s.a16[i]) += fv;
+    accAt(acc, s.b16[i]) -= fv;
+}
+
+// Springs [begin, end) into `acc`.
+inline void springForces(const SpringArrays& s, size_t begin, size_t end, const PackedParticle* xv, Acc4* acc) {
+    size_t i = begin;
+#if defined(__SSE2__)
+    const uint32_t* __restrict a16 = s.a16;
+    const uint32_t* __restrict b16 = s.b16;
+    const float* __restrict rest = s.rest;
+    const float* __restrict k = s.k;
+    const float* __restrict kd = s.kd;
+    const char* __restrict px = reinterpret_cast<const char*>(xv); // particle at 2 * offset
+    char* __restrict pf = reinterpret_cast<char*>(acc);            // accumulator at offset
+    const __m128 tiny = _mm_set1_ps(1e-12f);
+    const __m128 one = _mm_set1_ps(1.f);
+    for (; i + 4 <= end; i += 4) {
+        __m128 d[4], dv[4];
+        uint32_t ia[4], ib[4];
+        for (int j = 0; j < 4; ++j) {
+            ia[j] = a16[i + j];
+            ib[j] = b16[i + j];
+            const float* A = reinterpret_cast<const float*>(px + 2 * size_t(ia[j]));
+            const float* B = reinterpret_cast<const float*>(px + 2 * size_t(ib[j]));
+            d[j] = _mm_sub_ps(_mm_load_ps(B), _mm_load_ps(A));
+            dv[j] = _mm_sub_ps(_mm_load_ps(B + 4), _mm_load_ps(A + 4));
+        }
+        const __m128 dj[4] = {d[0], d[1], d[2], d[3]}; // one spring per vector, for the forces
+        // Four springs side by side: dx = (d0.x, d1.x, d2.x, d3.x), ...
+        _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
+        _MM_TRANSPOSE4_PS(dv[0], dv[1], dv[2], dv[3]);
+        const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
+        const __m128 len = _mm_sqrt_ps(len2);
+        const __m128 valid = _mm_cmpgt_ps(len, tiny);
+        const __m128 inv = _mm_div_ps(one, _mm_or_ps(_mm_andnot_ps(valid, one), _mm_and_ps(valid, len)));
+        const __m128 dvd =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
+        const __m128 stretch = _mm_mul_ps(_mm_loadu_ps(k + i), _mm_sub_ps(len, _mm_loadu_ps(rest + i)));
+        const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + i), _mm_mul_ps(dvd, inv));
+        const __m128 f = _mm_and_ps(valid, _mm_mul_ps(_mm_add_ps(stretch, damp), inv));
+        const __m128 fs[4] = {_mm_mul_ps(_mm_shuffle_ps(f, f, 0x00), dj[0]), _mm_mul_ps(_mm_shuffle_ps(f, f, 0x55), dj[1]),
+                              _mm_mul_ps(_mm_shuffle_ps(f, f, 0xAA), dj[2]), _mm_mul_ps(_mm_shuffle_ps(f, f, 0xFF), dj[3])};
+        for (int j = 0; j < 4; ++j) {
+            float* fa = reinterpret_cast<float*>(pf + ia[j]);
+            float* fb = reinterpret_cast<float*>(pf + ib[j]);
+            _mm_store_ps(fa, _mm_add_ps(_mm_load_ps(fa), fs[j]));
+            _mm_store_ps(fb, _mm_sub_ps(_mm_load_ps(fb), fs[j]));
+        }
+    }
+#endif
+    for (; i < end; ++i) springForceScalar(s, i, xv, acc);
+}
+
+// Calls flagged(i, len2) for every spring i of [begin, end) whose squared length len2 is above
+// (rest_i * ratio)^2: the strain scan of the limit phase, with no square root. Four springs at a
+// time with SSE2; most groups of four are all below and cost one compare.
+template <class Flagged>
+inline void scanSprings(const SpringArrays& s, size_t begin, size_t end, float ratio, const PackedParticle* xv,
+                        Flagged&& flagged) {
+    size_t i = begin;
+    const float ratio2 = ratio * ratio;
+#if defined(__SSE2__)
+    const char* px = reinterpret_cast<const char*>(xv);
+    const __m128 r2 = _mm_set1_ps(ratio2);
+    for (; i + 4 <= end; i += 4) {
+        __m128 d[4];
+        for (int j = 0; j < 4; ++j) {
+            const float* A = reinterpret_cast<const float*>(px + 2 * size_t(s.a16[i + j]));
+            const float* B = reinterpret_cast<const float*>(px + 2 * size_t(s.b16[i + j]));
+            d[j] = _mm_sub_ps(_mm_load_ps(B), _mm_load_ps(A));
+            d[j] = _mm_mul_ps(d[j], d[j]);
+        }
+        _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
+        const __m128 len2 = _mm_add_ps(_mm_add_ps(d[0], d[1]), d[2]);
+        const __m128 r = _mm_loadu_ps(s.rest + i);
+        const int mask = _mm_movemask_ps(_mm_cmpgt_ps(len2, _mm_mul_ps(_mm_mul_ps(r, r), r2)));
+        if (mask == 0) continue;
+        alignas(16) float l2[4];
+        _mm_store_ps(l2, len2);
+        for (int j = 0; j < 4; ++j)
+            if (mask & (1 << j)) flagged(i + j, l2[j]);
+    }
+#endif
+    for (; i < end; ++i) {
+        const PackedParticle& A = packedAt(xv, s.a16[i]);
+        const PackedParticle& B = packedAt(xv, s.b16[i]);
+        const float dx = B.x[0] - A.x[0], dy = B.x[1] - A.x[1], dz = B.x[2] - A.x[2];
+        const float len2 = dx * dx + dy * dy + dz * dz;
+        if (len2 > s.rest[i] * s.rest[i] * ratio2) flagged(i, len2);
+    }
+}
+
+} // namespace clothtear
+
+namespace clothtear {
+
+// Tethers of particles [begin, end) (see tethers.h): a particle p with anchor a = anchor[p] must
+// stay within maxRatio * length[p] of it; one farther away moves back onto that sphere. Positions
+// and velocities are read from `packed` (x and v after integration), anchors' positions too (they
+// are pinned, so nothing moves them here), and the moved particles are written to x and v.
+// Inelastic velocity fix as in the Jacobi passes (moveParticle in world.cpp): with the move
+// delta = s d (d = x_p - x_a, s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0,
+// is cancelled up to |delta| / dt: v += delta * min(1 / dt, (v.d) / (-s |d|^2)). Returns false if
+// an anchor is no longer pinned (the tethers are stale and must be rebuilt).
+inline bool tetherKernel(size_t begin, size_t end, const Index* anchor, const float* length, const float* invMass,
+                         const uint8_t* cut, float maxRatio, float dt, bool velocityFix, const PackedParticle* packed,
+                         Vec3* x, Vec3* v) {
+    bool ok = true;
+    auto one = [&](size_t p) {
+        const Index a = anchor[p];
+        if (a == kNone || a == p || invMass[p] == 0.f || (cut && cut[p])) return;
+        if (invMass[a] != 0.f) {
+            ok = false;
+            return;
+        }
+        const PackedParticle& P = packed[p];
+        const PackedParticle& A = packed[a];
+        const float dx = P.x[0] - A.x[0], dy = P.x[1] - A.x[1], dz = P.x[2] - A.x[2];
+        const float len2 = dx * dx + dy * dy + dz * dz, L = maxRatio * length[p];
+        if (len2 <= L * L) return;
+        const float s = L / std::sqrt(len2) - 1.f;
+        const Vec3 delta(dx * s, dy * s, dz * s);
+        x[p] = Vec3(P.x[0], P.x[1], P.x[2]) + delta;
+        if (!velocityFix) return;
+        const float vd = P.v[0] * dx + P.v[1] * dy + P.v[2] * dz;
+        if (vd > 0.f) v[p] = Vec3(P.v[0], P.v[1], P.v[2]) + delta * std::min(1.f / dt, vd / (-s * len2));
+    };
+    size_t p = begin;
+#if defined(__SSE2__)
+    const __m128 ratio = _mm_set1_ps(maxRatio), invDt = _mm_set1_ps(1.f / dt), ones = _mm_set1_ps(1.f);
+    const __m128 zero = _mm_setzero_ps();
+    for (; p + 4 <= end; p += 4) {
+        int usable = 0;
+        for (int j = 0; j < 4; ++j) {
+            const Index a = anchor[p + j];
+            if (a == kNone || a == p + j || invMass[p + j] == 0.f || (cut && cut[p + j])) continue;
+            if (invMass[a] != 0.f) {
+                ok = false;
+                continue;
+            }
+            usable |= 1 << j;
+        }
+        if (!usable) continue;
+        __m128 d[4], vv[4];
+        for (int j = 0; j < 4; ++j) {
+            const Index a = (usable >> j & 1) ? anchor[p + j] : Index(p + j);
+            d[j] = _mm_sub_ps(_mm_load_ps(packed[p + j].x), _mm_load_ps(packed[a].x));
+            vv[j] = _mm_load_ps(packed[p + j].v);
+        }
+        _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
+        _MM_TRANSPOSE4_PS(vv[0], vv[1], vv[2], vv[3]);
+        const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
+        const __m128 L = _mm_mul_ps(ratio, _mm_loadu_ps(length + p));
+        const int over = _mm_movemask_ps(_mm_cmpgt_ps(len2, _mm_mul_ps(L, L))) & usable;
+        if (!over) continue;
+        // s = L / |d| - 1 (lanes not over: |d| replaced by 1, results unused)
+        const __m128 safe = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(len2, zero), len2), _mm_andnot_ps(_mm_cmpgt_ps(len2, zero), ones));
+        const __m128 s = _mm_sub_ps(_mm_div_ps(L, _mm_sqrt_ps(safe)), ones);
+        alignas(16) float dx[4], dy[4], dz[4], sv[4], c[4];
+        _mm_store_ps(dx, d[0]);
+        _mm_store_ps(dy, d[1]);
+        _mm_store_ps(dz, d[2]);
+        _mm_store_ps(sv, s);
+        if (velocityFix) {
+            const __m128 vd = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vv[0], d[0]), _mm_mul_ps(vv[1], d[1])), _mm_mul_ps(vv[2], d[2]));
+            const __m128 den = _mm_mul_ps(_mm_sub_ps(zero, s), safe);
+            const __m128 denSafe = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(den, zero), den), _mm_andnot_ps(_mm_cmpgt_ps(den, zero), ones));
+            __m128 coef = _mm_min_ps(invDt, _mm_div_ps(vd, denSafe));
+            coef = _mm_and_ps(coef, _mm_cmpgt_ps(vd, zero));
+            _mm_store_ps(c, coef);
+        }
+        for (int j = 0; j < 4; ++j) {
+            if (!(over >> j & 1)) continue;
+            const size_t q = p + j;
+            const Vec3 delta(dx[j] * sv[j], dy[j] * sv[j], dz[j] * sv[j]);
+            x[q] = Vec3(packed[q].x[0], packed[q].x[1], packed[q].x[2]) + delta;
+            if (velocityFix && c[j] > 0.f) v[q] = Vec3(packed[q].v[0], packed[q].v[1], packed[q].v[2]) + delta * c[j];
+        }
+    }
+#endif
+    for (; p < end; ++p) one(p);
+    return ok;
+}
+
+} // namespace clothtear
