@@ -47,6 +47,7 @@ struct Driver {
 struct LimitCache {
     // Tethers (long-range attachments).
     std::vector<Index> anchor; // per particle: the pinned particle it hangs from, kNone if none
+    std::vector<Index> tether; // per particle: its anchor if it has a tether to pull (not pinned), else kNone
     std::vector<float> length; // m, per particle: rest length of the spring path to the anchor
     std::vector<Index> parent; // per particle: previous particle on that path (kNone for anchors)
     std::vector<Index> order;  // particles reached, breadth-first from the anchors (parents first)

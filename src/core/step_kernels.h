@@ -146,25 +146,19 @@ inline void scanSprings(const SpringArrays& s, size_t begin, size_t end, float r
 
 namespace clothtear {
 
-// Tethers of particles [begin, end) (see tethers.h): a particle p with anchor a = anchor[p] must
-// stay within maxRatio * length[p] of it; one farther away moves back onto that sphere. Positions
-// and velocities are read from `packed` (x and v after integration), anchors' positions too (they
-// are pinned, so nothing moves them here), and the moved particles are written to x and v.
-// Inelastic velocity fix as in the Jacobi passes (moveParticle in world.cpp): with the move
-// delta = s d (d = x_p - x_a, s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0,
-// is cancelled up to |delta| / dt: v += delta * min(1 / dt, (v.d) / (-s |d|^2)). Returns false if
-// an anchor is no longer pinned (the tethers are stale and must be rebuilt).
-inline bool tetherKernel(size_t begin, size_t end, const Index* anchor, const float* length, const float* invMass,
-                         const uint8_t* cut, float maxRatio, float dt, bool velocityFix, const PackedParticle* packed,
-                         Vec3* x, Vec3* v) {
-    bool ok = true;
+// Tethers of particles [begin, end) (see tethers.h): a particle p with anchor a = anchor[p] (kNone:
+// no tether, also for pinned particles) must stay within maxRatio * length[p] of it; one farther
+// away moves back onto that sphere. Positions and velocities are read from `packed` (x and v after
+// integration; anchors are pinned, so nothing moves them here) and the moved particles are written
+// to x and v. Particles with cut[p] set are skipped (cut may be null). Inelastic velocity fix as in
+// the Jacobi passes (moveParticle in world.cpp): with the move delta = s d (d = x_p - x_a,
+// s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0, is cancelled up to |delta| / dt:
+//   v += delta * min(1 / dt, (v.d) / (-s |d|^2)).
+inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const float* length, const uint8_t* cut,
+                         float maxRatio, float dt, bool velocityFix, const PackedParticle* packed, Vec3* x, Vec3* v) {
     auto one = [&](size_t p) {
         const Index a = anchor[p];
-        if (a == kNone || a == p || invMass[p] == 0.f || (cut && cut[p])) return;
-        if (invMass[a] != 0.f) {
-            ok = false;
-            return;
-        }
+        if (a == kNone || (cut && cut[p])) return;
         const PackedParticle& P = packed[p];
         const PackedParticle& A = packed[a];
         const float dx = P.x[0] - A.x[0], dy = P.x[1] - A.x[1], dz = P.x[2] - A.x[2];
@@ -181,57 +175,60 @@ inline bool tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
 #if defined(__SSE2__)
     const __m128 ratio = _mm_set1_ps(maxRatio), invDt = _mm_set1_ps(1.f / dt), ones = _mm_set1_ps(1.f);
     const __m128 zero = _mm_setzero_ps();
+    const __m128i none = _mm_set1_epi32(int(kNone));
+    auto store3 = [](Vec3& to, __m128 from) {
+        _mm_storel_pi(reinterpret_cast<__m64*>(to.data()), from);
+        _mm_store_ss(to.data() + 2, _mm_movehl_ps(from, from));
+    };
     for (; p + 4 <= end; p += 4) {
-        int usable = 0;
-        for (int j = 0; j < 4; ++j) {
-            const Index a = anchor[p + j];
-            if (a == kNone || a == p + j || invMass[p + j] == 0.f || (cut && cut[p + j])) continue;
-            if (invMass[a] != 0.f) {
-                ok = false;
-                continue;
-            }
-            usable |= 1 << j;
-        }
+        const __m128i a4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(anchor + p));
+        int usable = ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(a4, none))) & 15;
+        if (cut)
+            for (int j = 0; j < 4; ++j)
+                if (cut[p + j]) usable &= ~(1 << j);
         if (!usable) continue;
-        __m128 d[4], vv[4];
+        __m128 d[4], dt4[4], vv[4], xp[4];
         for (int j = 0; j < 4; ++j) {
             const Index a = (usable >> j & 1) ? anchor[p + j] : Index(p + j);
-            d[j] = _mm_sub_ps(_mm_load_ps(packed[p + j].x), _mm_load_ps(packed[a].x));
+            xp[j] = _mm_load_ps(packed[p + j].x);
             vv[j] = _mm_load_ps(packed[p + j].v);
+            d[j] = dt4[j] = _mm_sub_ps(xp[j], _mm_load_ps(packed[a].x));
         }
-        _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
-        _MM_TRANSPOSE4_PS(vv[0], vv[1], vv[2], vv[3]);
-        const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
+        __m128 vt[4] = {vv[0], vv[1], vv[2], vv[3]};
+        _MM_TRANSPOSE4_PS(dt4[0], dt4[1], dt4[2], dt4[3]);
+        const __m128 len2 =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dt4[0], dt4[0]), _mm_mul_ps(dt4[1], dt4[1])), _mm_mul_ps(dt4[2], dt4[2]));
         const __m128 L = _mm_mul_ps(ratio, _mm_loadu_ps(length + p));
         const int over = _mm_movemask_ps(_mm_cmpgt_ps(len2, _mm_mul_ps(L, L))) & usable;
         if (!over) continue;
-        // s = L / |d| - 1 (lanes not over: |d| replaced by 1, results unused)
-        const __m128 safe = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(len2, zero), len2), _mm_andnot_ps(_mm_cmpgt_ps(len2, zero), ones));
+        // Lanes not over: |d| replaced by 1, their results unused.
+        const __m128 pos = _mm_cmpgt_ps(len2, zero);
+        const __m128 safe = _mm_or_ps(_mm_and_ps(pos, len2), _mm_andnot_ps(pos, ones));
         const __m128 s = _mm_sub_ps(_mm_div_ps(L, _mm_sqrt_ps(safe)), ones);
-        alignas(16) float dx[4], dy[4], dz[4], sv[4], c[4];
-        _mm_store_ps(dx, d[0]);
-        _mm_store_ps(dy, d[1]);
-        _mm_store_ps(dz, d[2]);
-        _mm_store_ps(sv, s);
+        __m128 coef = zero;
         if (velocityFix) {
-            const __m128 vd = _mm_add_ps(_mm_add_ps(_mm_mul_ps(vv[0], d[0]), _mm_mul_ps(vv[1], d[1])), _mm_mul_ps(vv[2], d[2]));
+            _MM_TRANSPOSE4_PS(vt[0], vt[1], vt[2], vt[3]);
+            const __m128 vd =
+                _mm_add_ps(_mm_add_ps(_mm_mul_ps(vt[0], dt4[0]), _mm_mul_ps(vt[1], dt4[1])), _mm_mul_ps(vt[2], dt4[2]));
             const __m128 den = _mm_mul_ps(_mm_sub_ps(zero, s), safe);
-            const __m128 denSafe = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(den, zero), den), _mm_andnot_ps(_mm_cmpgt_ps(den, zero), ones));
-            __m128 coef = _mm_min_ps(invDt, _mm_div_ps(vd, denSafe));
-            coef = _mm_and_ps(coef, _mm_cmpgt_ps(vd, zero));
-            _mm_store_ps(c, coef);
+            const __m128 denPos = _mm_cmpgt_ps(den, zero);
+            const __m128 denSafe = _mm_or_ps(_mm_and_ps(denPos, den), _mm_andnot_ps(denPos, ones));
+            coef = _mm_and_ps(_mm_min_ps(invDt, _mm_div_ps(vd, denSafe)), _mm_cmpgt_ps(vd, zero));
         }
+        const __m128 sj[4] = {_mm_shuffle_ps(s, s, 0x00), _mm_shuffle_ps(s, s, 0x55), _mm_shuffle_ps(s, s, 0xAA),
+                              _mm_shuffle_ps(s, s, 0xFF)};
+        const __m128 cj[4] = {_mm_shuffle_ps(coef, coef, 0x00), _mm_shuffle_ps(coef, coef, 0x55),
+                              _mm_shuffle_ps(coef, coef, 0xAA), _mm_shuffle_ps(coef, coef, 0xFF)};
         for (int j = 0; j < 4; ++j) {
             if (!(over >> j & 1)) continue;
-            const size_t q = p + j;
-            const Vec3 delta(dx[j] * sv[j], dy[j] * sv[j], dz[j] * sv[j]);
-            x[q] = Vec3(packed[q].x[0], packed[q].x[1], packed[q].x[2]) + delta;
-            if (velocityFix && c[j] > 0.f) v[q] = Vec3(packed[q].v[0], packed[q].v[1], packed[q].v[2]) + delta * c[j];
+            const __m128 delta = _mm_mul_ps(d[j], sj[j]);
+            store3(x[p + j], _mm_add_ps(xp[j], delta));
+            // With coef 0 this writes back the velocity it read (packed v is v after integration).
+            if (velocityFix) store3(v[p + j], _mm_add_ps(vv[j], _mm_mul_ps(delta, cj[j])));
         }
     }
 #endif
     for (; p < end; ++p) one(p);
-    return ok;
 }
 
 } // namespace clothtear

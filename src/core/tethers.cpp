@@ -66,6 +66,10 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
         begin = end;
         if (begin < t.order.size()) t.depth = depth + 1;
     }
+    // The particles a tether pulls: reached, and free (pinned ones never move).
+    t.tether.assign(n, kNone);
+    for (Index p = 0; p < n; ++p)
+        if (t.anchor[p] != kNone && t.anchor[p] != p && cloth.invMass[p] != 0.f) t.tether[p] = t.anchor[p];
 }
 
 void markTethersThrough(const LimitCache& t, const std::vector<Index>& seeds, std::vector<uint8_t>& cut) {

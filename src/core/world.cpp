@@ -208,11 +208,11 @@ void World::phaseForces(float /*dt*/) {
 // The spring cache follows the topology revision, the cloth's arrays, the pinned particles (from
 // the last integration, so a pin change reaches the guard one sub-step late), the material and dt.
 //
-// Order: within each block of 64 springs, entry 4q + j holds spring 16j + q of the block, so the
-// four springs of a SIMD group come from four places 16 springs apart in mesh order. Springs next
-// to each other in mesh order share particles, and a group of four that adds into the same
-// accumulator four times waits on its own stores (measured: 5.2 ns per spring in mesh order, 3.3
-// interleaved). Blocks stay in mesh order, so a thread's chunk still touches a band of the cloth.
+// Order: within each block of 64 springs, entry 8q + j holds spring 8j + q of the block, so the
+// springs of a SIMD group (4 or 8) come from places 8 springs apart in mesh order. Springs next
+// to each other in mesh order share particles, and a group that adds into the same accumulator
+// several times waits on its own stores (measured with groups of four: 5.2 ns per spring in mesh
+// order, 3.3 interleaved). Blocks stay in mesh order, so a thread's chunk still touches a band.
 void World::refreshSpringCache(float dt) {
     SpringCache& S = scratch_.springs;
     const MaterialSettings& m = settings.material;
@@ -233,11 +233,11 @@ void World::refreshSpringCache(float dt) {
     S.structural = ns;
     const float kCap = 1.f / (3.f * dt * dt), kdCap = 1.f / (6.f * dt);
     auto fill = [&](const std::vector<Spring>& springs, size_t count, size_t offset, float ks, float kds) {
-        constexpr size_t kBlock = 64, kLane = kBlock / 4;
+        constexpr size_t kBlock = 64, kWays = 8, kLane = kBlock / kWays;
         for (size_t e = 0; e < count; ++e) {
             // Entry e of this kind takes spring i (a permutation within full blocks).
             const size_t base = e - e % kBlock, q = e % kBlock;
-            const size_t i = base + kBlock <= count ? base + (q % 4) * kLane + q / 4 : e;
+            const size_t i = base + kBlock <= count ? base + (q % kWays) * kLane + q / kWays : e;
             const Spring& s = springs[i];
             float k = ks * s.weight, damping = kds * s.weight;
             if (guard) {
@@ -675,7 +675,6 @@ void World::phaseLimit(float dt) {
 
     size_t listSize[kMaxThreadSlots] = {};
     int work[kMaxThreadSlots] = {};
-    bool stale = false;
     float exemptStrain = -1.f; // with too many candidates: those below this strain are limited
 
     // Is spring i over its limit (by more than the tolerance)? Exempt if it is a candidate that
@@ -771,15 +770,9 @@ void World::phaseLimit(float dt) {
         }
         const uint8_t* cut = anyFound ? C.cut.data() : nullptr;
         const Chunk pc = chunkOf(n, t, nt);
-        const bool localStale =
-            useTethers && !tetherKernel(pc.begin, pc.end, C.anchor.data(), C.length.data(), invMass, cut,
-                                        P.maxRatio * (1.f - kTetherSlack), P.dt, P.velocityFix, packed, x, v);
-        if (localStale) {
-#if CLOTHTEAR_HAVE_OPENMP
-#pragma omp critical(clothtear_tether_stale)
-#endif
-            stale = true;
-        }
+        if (useTethers)
+            tetherKernel(pc.begin, pc.end, C.tether.data(), C.length.data(), cut, P.maxRatio * (1.f - kTetherSlack),
+                         P.dt, P.velocityFix, packed, x, v);
 
         // ---- Jacobi passes over the listed springs, until none is over the limit
         for (int pass = 0; pass < L.iterations; ++pass) {
@@ -820,7 +813,6 @@ void World::phaseLimit(float dt) {
         parallelBarrier(nt);
         for (Index i : list) listed[i] = 0;
     });
-    if (stale) C.key = ~uint64_t(0);
 
     // Tear candidates, merged in thread order (deterministic).
     scratch_.tearCandidates.clear();
