@@ -842,21 +842,47 @@ void World::phaseCollide(float dt) {
 
 // ============================================================================================= [MISC]
 
+// Once per frame: the largest structural strain (compared as squared length ratios, one square
+// root at the end) and the first non-finite particle, both split over the threads.
 void World::phaseBookkeeping() {
     PhaseTimer t(profile, Phase::Bookkeeping);
+    const size_t ns = cloth.springs.size(), n = cloth.particleCount();
+    const int threads = threadsFor(n);
+    float worstLen2[kMaxThreadSlots], worstRest2[kMaxThreadSlots];
+    size_t firstBad[kMaxThreadSlots];
+    const bool checkFinite = finite;
+    parallelRegion(std::max(ns, n), threads, [&](int t, int nt) {
+        const Chunk c = chunkOf(ns, t, nt);
+        float len2Max = 0.f, rest2Max = 1.f; // ratio len2Max / rest2Max, kept without dividing
+        for (size_t i = c.begin; i < c.end; ++i) {
+            const Spring& s = cloth.springs[i];
+            const float len2 = (cloth.x[s.b] - cloth.x[s.a]).squaredNorm(), rest2 = s.rest * s.rest;
+            if (len2 * rest2Max > len2Max * rest2) len2Max = len2, rest2Max = rest2;
+        }
+        worstLen2[t] = len2Max;
+        worstRest2[t] = rest2Max;
+        firstBad[t] = n;
+        if (!checkFinite) return;
+        const Chunk pc = chunkOf(n, t, nt);
+        for (size_t p = pc.begin; p < pc.end; ++p)
+            if (!cloth.x[p].allFinite() || !cloth.v[p].allFinite()) {
+                firstBad[t] = p;
+                break;
+            }
+    });
+    const int used = (threads > 1 && std::max(ns, n) >= kParallelWork) ? threads : 1;
     float worst = 0.f;
-    for (const Spring& s : cloth.springs) {
-        const float len = (cloth.x[s.b] - cloth.x[s.a]).norm();
-        worst = std::max(worst, len / s.rest - 1.f);
+    size_t bad = n;
+    for (int k = 0; k < used; ++k) {
+        worst = std::max(worst, std::sqrt(worstLen2[k] / worstRest2[k]) - 1.f);
+        bad = std::min(bad, firstBad[k]);
     }
     maxStrain = worst;
     if (finite) {
-        for (Index p = 0; p < cloth.particleCount(); ++p)
-            if (!cloth.x[p].allFinite() || !cloth.v[p].allFinite()) {
-                finite = false;
-                nonFiniteWhere = "particle " + std::to_string(p) + " at frame " + std::to_string(steps);
-                break;
-            }
+        if (bad < n) {
+            finite = false;
+            nonFiniteWhere = "particle " + std::to_string(bad) + " at frame " + std::to_string(steps);
+        }
         for (const Ball& b : balls)
             if (!b.x.allFinite() || !b.v.allFinite()) finite = false;
     }
