@@ -73,7 +73,7 @@ struct alignas(32) PackedParticle {
 
 // The springs as the kernels read them (world.cpp [SPRINGS], step_kernels.h): structural, then
 // bend-shear, one array per field, ends as byte offsets (16 * particle), stiffness and damping
-// after the stability guard, in an order that keeps the four springs of a SIMD group apart (see
+// after the stability guard, in an order that keeps the springs of a SIMD group apart (see
 // refreshSpringCache). Rebuilt when the topology, the pinned particles, the material or dt change.
 struct SpringCache {
     std::vector<uint32_t> a16, b16;  // 16 * particle index of the two ends
@@ -86,10 +86,7 @@ struct SpringCache {
 
 // Work arrays of the step, kept between steps so the step does not allocate.
 struct StepScratch {
-    std::vector<Vec3> force; // per particle (unused since the external forces moved into the integrator)
     std::vector<std::vector<Eigen::Vector4f>> threadAcc; // per thread force buffers (xyz), zero between sub-steps
-    std::vector<std::vector<float>> threadCount;
-    std::vector<Vec3> correction;
     std::vector<TearCandidate> tearCandidates; // springs over their tear threshold, from the strain scan
     // Hot-loop state (world.cpp, [SPRINGS] and [LIMIT]).
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its buffer may hold
@@ -97,7 +94,7 @@ struct StepScratch {
     std::vector<std::vector<Index>> threadActive;   // per thread: springs the limit still works on
     std::vector<std::vector<Index>> threadTouched;  // per thread: particles with a correction this pass
     std::vector<std::vector<Index>> threadMoved;    // per thread: particles the last Jacobi pass moved
-    std::vector<std::vector<TearCandidate>> threadFound;
+    std::vector<std::vector<TearCandidate>> threadFound; // per thread: tear candidates of the scan
     std::vector<PackedParticle> packed; // per particle: x and v for the spring kernels
     uint64_t pinSignature = 0; // hash of the particles with invMass 0, from the last integration
     SpringCache springs;

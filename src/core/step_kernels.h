@@ -176,6 +176,15 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
     const __m128 ratio = _mm_set1_ps(maxRatio), invDt = _mm_set1_ps(1.f / dt), ones = _mm_set1_ps(1.f);
     const __m128 zero = _mm_setzero_ps();
     const __m128i none = _mm_set1_epi32(int(kNone));
+    // Four xyz vectors (w ignored) to twelve consecutive floats: x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3.
+    auto store4x3 = [](float* to, const __m128 r[4]) {
+        const __m128 a = _mm_shuffle_ps(r[0], _mm_shuffle_ps(r[0], r[1], _MM_SHUFFLE(0, 0, 2, 2)), _MM_SHUFFLE(2, 0, 1, 0));
+        const __m128 b = _mm_shuffle_ps(r[1], r[2], _MM_SHUFFLE(1, 0, 2, 1));
+        const __m128 c = _mm_shuffle_ps(_mm_shuffle_ps(r[2], r[3], _MM_SHUFFLE(0, 0, 2, 2)), r[3], _MM_SHUFFLE(2, 1, 2, 0));
+        _mm_storeu_ps(to, a);
+        _mm_storeu_ps(to + 4, b);
+        _mm_storeu_ps(to + 8, c);
+    };
     auto store3 = [](Vec3& to, __m128 from) {
         _mm_storel_pi(reinterpret_cast<__m64*>(to.data()), from);
         _mm_store_ss(to.data() + 2, _mm_movehl_ps(from, from));
@@ -219,6 +228,19 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
                               _mm_shuffle_ps(s, s, 0xFF)};
         const __m128 cj[4] = {_mm_shuffle_ps(coef, coef, 0x00), _mm_shuffle_ps(coef, coef, 0x55),
                               _mm_shuffle_ps(coef, coef, 0xAA), _mm_shuffle_ps(coef, coef, 0xFF)};
+        if (over == 15) {
+            // All four move (the common case at rest): three 16-byte stores per array for the four
+            // consecutive Vec3s instead of four 12-byte ones.
+            __m128 xn[4], vn[4];
+            for (int j = 0; j < 4; ++j) {
+                const __m128 delta = _mm_mul_ps(d[j], sj[j]);
+                xn[j] = _mm_add_ps(xp[j], delta);
+                vn[j] = _mm_add_ps(vv[j], _mm_mul_ps(delta, cj[j])); // coef 0: the velocity it read
+            }
+            store4x3(x[p].data(), xn);
+            if (velocityFix) store4x3(v[p].data(), vn);
+            continue;
+        }
         for (int j = 0; j < 4; ++j) {
             if (!(over >> j & 1)) continue;
             const __m128 delta = _mm_mul_ps(d[j], sj[j]);

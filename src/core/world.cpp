@@ -3,9 +3,9 @@
 // Section index:
 //   [SETUP]      rebuild, pinning, settings
 //   [STEP]       step / substep and the phase driver
-//   [FORCES]     gravity, air friction, spring forces, wind
-//   [INTEGRATE]  semi-implicit Euler, forward Euler, Verlet
-//   [LIMIT]      Provot length limiting (averaged Jacobi), fused with the strain scan
+//   [FORCES]     force buffers, spring cache, spring forces (kernels: step_kernels.h), wind
+//   [INTEGRATE]  gravity, air friction; semi-implicit Euler, forward Euler, Verlet
+//   [LIMIT]      strain scan, tethers (tethers.h), Provot length limiting (averaged Jacobi)
 //   [MISC]       impulse, energy, bookkeeping
 #include "clothtear/world.h"
 
@@ -609,14 +609,16 @@ void World::refreshLimitCache() {
 // tear.max_per_step candidates, only the most strained max_per_step are exempt; the later passes
 // limit the others, so a spring is never left unlimited without being torn (that ran away).
 //
-// Order and cost. (1) The strain scan reads every structural spring once; most leave after one
-// squared-length compare (no square root). (2) The tethers (tethers.h) pull every particle back
-// within reach of its anchor: what the Jacobi passes cannot carry across a large cloth in a dozen
-// passes. A tether whose path runs through a tear candidate does not pull this sub-step; the scan
+// Order and cost, all in one parallel region. (1) The strain scan reads every structural spring
+// once (four at a time, step_kernels.h); most leave after one squared-length compare, no square
+// root. It lists the candidates and the springs over the limit. (2) On cloths the passes alone
+// cannot hold (tethers.h: sag index), the tethers pull every particle back within reach of its
+// anchor. A tether whose path runs through a tear candidate does not pull this sub-step; the scan
 // comes first so that a spring reaching its threshold is seen before anything pulls it back.
-// (3) A second scan lists the springs over the limit (tethers stretch some between particles they
-// move by different amounts). (4) The Jacobi passes work on that list only, drop the springs back
-// within the limit (to a tolerance of 0.1% of the limit) and stop when none is left.
+// (3) The Jacobi passes work on the listed springs only: a pass drops the springs back within the
+// limit (to kLimitTolerance) and lists the springs of the particles it moved that it pushed over
+// (particle-spring table), so a pass covers what a full pass would correct; they stop when a pass
+// corrects nothing. At rest that is a few hundred springs, not all of them, per sub-step.
 void World::phaseLimit(float dt) {
     const size_t n = cloth.particleCount();
     const size_t ns = cloth.springs.size();
