@@ -587,7 +587,8 @@ inline void applyCorrections(const std::vector<std::vector<Index>>& touched, std
 // others.
 void World::refreshLimitCache() {
     LimitCache& C = scratch_.limit;
-    uint64_t key = hashIndex(cloth.topologyRevision) + hashIndex(scratch_.pinSignature ^ 0x5bd1e995u);
+    uint64_t key = hashIndex(cloth.topologyRevision) + hashIndex(scratch_.pinSignature ^ 0x5bd1e995u) +
+                   hashIndex(uint64_t(uintptr_t(cloth.springs.data())) ^ 0xc2b2ae35u);
     for (const Driver& d : drivers)
         for (Index p : d.particles) key += hashIndex(uint64_t(p) << 20 | 7u);
     if (key == C.key && C.anchor.size() == cloth.particleCount() && C.listed.size() == cloth.springs.size()) return;
