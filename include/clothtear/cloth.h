@@ -93,6 +93,8 @@ double uvArea(const Vec2d& a, const Vec2d& b, const Vec2d& c); // signed
 
 // Spring weight (area / rest^2) from the adjacent rest triangle areas.
 float springWeight(double adjacentArea, double restLength);
+// Sets the weight of structural spring s from the rest areas of the triangles it lists.
+void refreshSpringWeight(Cloth& cloth, Index s);
 
 // Index helpers on the triangle ring.
 inline int cornerOf(const Triangle& t, Index particle) {

@@ -31,6 +31,13 @@ double bendRestLength(double e, double ac, double bc, double ad, double bd) {
     return std::sqrt(std::max(0.0, ac * ac + ad * ad - 2.0 * ac * ad * std::cos(theta))); // Eq. 4
 }
 
+void refreshSpringWeight(Cloth& cloth, Index s) {
+    double area = 0;
+    for (Index t : cloth.springTopo[s].tri)
+        if (t != kNone) area += cloth.triangles[t].restArea;
+    cloth.springs[s].weight = springWeight(area, cloth.springs[s].rest);
+}
+
 void Cloth::refreshInvMass(Index p) {
     const double m = particleMass(p);
     invMass[p] = (flags[p] & kPinned) || m <= 0.0 ? 0.0f : static_cast<float>(1.0 / m);
@@ -180,12 +187,9 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
         c.triangles.push_back(t);
     }
     for (Index s = 0; s < c.springs.size(); ++s) {
-        double area = 0;
-        for (Index t : c.springTopo[s].tri)
-            if (t != kNone) area += c.triangles[t].restArea;
-        c.springs[s].weight = springWeight(area, c.springs[s].rest);
+        refreshSpringWeight(c, s);
+        syncBendSpring(c, s);
     }
-    for (Index s = 0; s < c.springs.size(); ++s) syncBendSpring(c, s);
     for (Index p = 0; p < n; ++p) c.refreshInvMass(p);
     Result<Cloth> r;
     r.value = std::move(c);

@@ -66,8 +66,14 @@ std::vector<Fan> fansAround(const Cloth& cloth, Index p) {
     return fans;
 }
 
-bool isTearTip(const Cloth& cloth, Index p) {
+uint8_t fanFlags(const Cloth& cloth, Index p) {
     const std::vector<Fan> fans = fansAround(cloth, p);
+    if (fans.size() > 1) return kHinge;
+    return isTearTip(cloth, fans, p) ? kWeak : 0;
+}
+
+
+bool isTearTip(const Cloth& cloth, const std::vector<Fan>& fans, Index p) {
     if (fans.size() != 1 || fans[0].closed || fans[0].spokes.size() < 3) return false;
     const Index q1 = otherEnd(cloth.springs[fans[0].spokes.front()], p);
     const Index q2 = otherEnd(cloth.springs[fans[0].spokes.back()], p);
@@ -137,10 +143,7 @@ void refreshAround(Cloth& c, const std::vector<Index>& triangles) {
     std::sort(springs.begin(), springs.end());
     springs.erase(std::unique(springs.begin(), springs.end()), springs.end());
     for (Index s : springs) {
-        double area = 0;
-        for (Index t : c.springTopo[s].tri)
-            if (t != kNone) area += c.triangles[t].restArea;
-        c.springs[s].weight = springWeight(area, c.springs[s].rest);
+        refreshSpringWeight(c, s);
         syncBendSpring(c, s);
     }
     // Flags depend on the fans of the corners and of their neighbours (a tip moves along the tear).
@@ -157,10 +160,7 @@ void refreshAround(Cloth& c, const std::vector<Index>& triangles) {
     std::sort(flagged.begin(), flagged.end());
     flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
     for (Index p : flagged) {
-        uint8_t f = c.flags[p] & uint8_t(~(kWeak | kHinge));
-        if (fansAround(c, p).size() > 1) f |= kHinge;
-        else if (isTearTip(c, p)) f |= kWeak;
-        c.flags[p] = f;
+        c.flags[p] = uint8_t((c.flags[p] & ~(kWeak | kHinge)) | fanFlags(c, p));
     }
     c.topologyRevision++;
 }

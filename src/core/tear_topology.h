@@ -22,7 +22,9 @@ std::vector<Fan> fansAround(const Cloth& cloth, Index p);
 
 // Tip of a tear (weak point): a single open fan whose two border spokes end in two copies of the
 // same rest point, i.e. the two walls of a slit meet at p.
-bool isTearTip(const Cloth& cloth, Index p);
+bool isTearTip(const Cloth& cloth, const std::vector<Fan>& fans, Index p);
+// kHinge (two or more fans), kWeak (tip of a tear) or 0, from one walk around p.
+uint8_t fanFlags(const Cloth& cloth, Index p);
 
 // The spring joining particles a and b, or kNone (O(valence)).
 Index findSpring(const Cloth& cloth, Index a, Index b);
