@@ -153,7 +153,7 @@ TEST(Collision, BallAndFreeClothExchangeMomentum) {
 // which decides the side from the ball's own segment against the triangle's new position, pushes it
 // out on the far side. Needs the ball in the limit/contact iterations (contacts solved with the
 // ball's mass together with the length constraints) and a relative (cloth-moving) swept test.
-TEST(Collision, DISABLED_FastBallDoesNotPassThroughTheCurtain) {
+TEST(Collision, FastBallDoesNotPassThroughTheCurtain) {
     for (float side : {1.f, -1.f}) {
         World w;
         ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"tear.enabled=false"}), "");

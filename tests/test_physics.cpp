@@ -495,18 +495,23 @@ TEST(Phases, CollideIsSkippedWithoutBallsOrGround) {
     for (int f = 0; f < 3; ++f)
         w.step();
     EXPECT_EQ(runsOf(w, Phase::Collide), 0u);
+    EXPECT_EQ(runsOf(w, Phase::Contact), 0u);
     EXPECT_EQ(runsOf(w, Phase::Integrate), w.profile.substeps);
-    // Control: with the ground on, the phase runs every sub-step.
+    // Control: with the ground on, the contact phase (which holds the ground) runs every sub-step,
+    // the ball phase still not.
+    const uint64_t substeps = uint64_t(w.settings.time.substeps);
     w.settings.collision.ground = true;
     w.profile.reset();
     w.step();
-    EXPECT_EQ(runsOf(w, Phase::Collide), uint64_t(w.settings.time.substeps));
-    // And with a ball but no ground.
+    EXPECT_EQ(runsOf(w, Phase::Collide), 0u);
+    EXPECT_EQ(runsOf(w, Phase::Contact), substeps);
+    // And with a ball but no ground: both.
     w.settings.collision.ground = false;
     w.balls.push_back(Ball{});
     w.profile.reset();
     w.step();
-    EXPECT_EQ(runsOf(w, Phase::Collide), uint64_t(w.settings.time.substeps));
+    EXPECT_EQ(runsOf(w, Phase::Collide), substeps);
+    EXPECT_EQ(runsOf(w, Phase::Contact), substeps);
 }
 
 TEST(Phases, WindIsSkippedWhenOff) {

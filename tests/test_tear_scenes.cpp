@@ -26,32 +26,32 @@ struct BallCase {
     bool tears;
 };
 
-// Outcomes that hold with the documented default cloth. `ball-r0.5-v3` (should tear) does not tear
-// yet with these settings: see the disabled test below.
+// The thesis outcomes (Onal 4.1, Table 4.1) with the documented default cloth.
 const BallCase kCases[] = {
-    {"ball-r1-v3-low", false},
-    {"ball-r1-v3-high", true},
-    {"ball-r2-v3", false},
-    {"ball-r2-v10", true},
+    {"ball-r0.5-v3", true},   {"ball-r1-v3-low", false}, {"ball-r1-v3-high", true},
+    {"ball-r2-v3", false},    {"ball-r2-v10", true},
 };
 
 } // namespace
 
-TEST(BallExperiments, OutcomesMatchTheThesis) {
-    for (const BallCase& c : kCases) {
-        const nlohmann::json r = runScene(c.scene, 2.5);
-        ASSERT_TRUE(r["finite"].get<bool>()) << c.scene;
-        EXPECT_EQ(r["tears_total"].get<uint64_t>() > 0, c.tears) << c.scene << " tears: " << r["tears"];
-        // Texture integrity and mass conservation through all of it.
-        EXPECT_NEAR(r["rest_area"].get<double>(), 36.0, 36.0 * 1e-9) << c.scene;
-        EXPECT_NEAR(r["uv_area"].get<double>(), 1.0, 1e-9) << c.scene;
-        EXPECT_NEAR(r["total_mass"].get<double>(), double(0.2f) * 36.0, 36.0 * 1e-9) << c.scene;
-    }
-}
-
-TEST(BallExperiments, DISABLED_SmallBallTears) {
-    const nlohmann::json r = runScene("ball-r0.5-v3", 2.5);
-    EXPECT_GT(r["tears_total"].get<uint64_t>(), 0u);
+// Each outcome must hold with the default tear threshold and with it 10% lower and 10% higher (the
+// outcome is not a knife-edge), with texture integrity and mass conservation through all of it.
+TEST(BallExperiments, OutcomesMatchTheThesisWithinTenPercentOfTheThreshold) {
+    const double threshold = 0.3; // tearClothConfig
+    for (const BallCase& c : kCases)
+        for (double f : {0.9, 1.0, 1.1}) {
+            const std::string set = "--set tear.threshold=" + std::to_string(threshold * f);
+            const nlohmann::json r = runScene(c.scene, 2.5, set);
+            const std::string where = std::string(c.scene) + " " + set;
+            ASSERT_TRUE(r["finite"].get<bool>()) << where;
+            EXPECT_EQ(r["tears_total"].get<uint64_t>() > 0, c.tears) << where << " tears: " << r["tears"];
+            EXPECT_NEAR(r["rest_area"].get<double>(), 36.0, 36.0 * 1e-9) << where;
+            EXPECT_NEAR(r["uv_area"].get<double>(), 1.0, 1e-9) << where;
+            EXPECT_NEAR(r["total_mass"].get<double>(), double(0.2f) * 36.0, 36.0 * 1e-9) << where;
+            // No sliver springs: a basic tear never halves a spring below minSplitRest, so strains
+            // stay near the limit instead of exploding on vanishing rest lengths.
+            EXPECT_LT(r["max_strain"].get<double>(), 1.0) << where;
+        }
 }
 
 TEST(TearScenes, PullAndTensionTearAndStayFinite) {

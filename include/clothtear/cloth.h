@@ -20,6 +20,7 @@ enum ParticleFlags : uint8_t {
     kPinned = 1u << 0, // never moved by forces, limiting or collisions (may be moved by a driver/tool)
     kWeak = 1u << 1,   // tip of a tear: springs touching it tear at the weak threshold (Onal 3.2.2)
     kHinge = 1u << 2,  // one-point connection: two parts of the cloth meet only here (Onal 3.2.3)
+    kTouched = 1u << 3, // under a ball this sub-step (set by the collide phase, cleared by the contact phase)
 };
 
 // A spring as the hot loops see it. Per-spring constants come from the material at use:
@@ -62,6 +63,10 @@ struct Cloth {
 
     uint64_t topologyRevision = 0; // bumped on every structural change (renderers re-upload indices)
     float density = 0.2f;          // kg/m^2 used for mass lumping
+    // m. A basic tear halves the torn spring; springs shorter than this are not halved again (a tear
+    // front that keeps halving the same corner makes slivers of vanishing mass). Set by buildCloth
+    // to kMinSplitFraction of the mean structural rest length.
+    float minSplitRest = 0.f;
 
     size_t particleCount() const { return x.size(); }
     double particleMass(Index p) const { return density * areaShare[p]; }
@@ -74,6 +79,10 @@ struct Cloth {
     double totalRestArea() const;
     double totalUvArea() const;
 };
+
+// Springs down to this fraction of the mean rest length can be halved by a basic tear: three
+// halvings of an original edge, enough for tears to cross and branch.
+constexpr double kMinSplitFraction = 0.125;
 
 // Builds the cloth from a mesh: particles at the rest positions, one spring per unique edge, one
 // bend-shear spring per interior edge. Refuses non-manifold edges (3+ triangles) and degenerate

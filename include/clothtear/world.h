@@ -1,10 +1,10 @@
 // The world: one cloth, balls, kinematic drivers, settings, and the step.
 //
 // A frame is `time.substeps` sub-steps. Each sub-step runs named phases, each timed into StepProfile:
-//   forces -> springs -> wind -> integrate -> limit -> collide -> tear -> bookkeeping
-// A phase the scene does not need is not entered (no wind: no wind loop; no balls and no ground: no
-// collision loop; tearing off: no strain scan). Topology changes (tearing) happen only in the tear
-// phase, between the others.
+//   forces -> springs -> wind -> integrate -> collide -> limit -> contact -> tear -> bookkeeping
+// A phase the scene does not need is not entered (no wind: no wind loop; no balls: no collide
+// phase, and no contact phase without the ground either; tearing off: no strain scan). Topology
+// changes (tearing) happen only in the tear phase, between the others.
 #pragma once
 #include "clothtear/cloth.h"
 #include "clothtear/settings.h"
@@ -18,7 +18,7 @@
 
 namespace clothtear {
 
-enum class Phase : int { Forces, Springs, Wind, Integrate, Limit, Collide, Tear, Bookkeeping, Count };
+enum class Phase : int { Forces, Springs, Wind, Integrate, Collide, Limit, Contact, Tear, Bookkeeping, Count };
 const char* phaseName(Phase p);
 
 struct StepProfile {
@@ -32,7 +32,17 @@ struct Ball {
     Vec3 x = Vec3::Zero();
     Vec3 v = Vec3::Zero();
     float radius = 0.5f; // m
-    float mass = 2.f;    // kg
+    float mass = 2.f;    // kg; 0: immovable
+};
+
+// A ball touching a triangle in the collide phase: the side of the triangle (sign along its normal)
+// the ball centre belongs on, which the contact phase keeps, and where the corners were left, which
+// tells the contact phase whether the limit pulled them back since.
+struct BallContact {
+    Index triangle;
+    uint32_t ball;
+    int8_t side;
+    std::array<Vec3, 3> at;
 };
 
 // Moves a set of particles at a constant velocity (pinned while driven): the pull and tension scenes,
@@ -96,6 +106,8 @@ struct StepScratch {
     std::vector<std::vector<Index>> threadMoved;    // per thread: particles the last Jacobi pass moved
     std::vector<std::vector<TearCandidate>> threadFound; // per thread: tear candidates of the scan
     std::vector<PackedParticle> packed; // per particle: x and v for the spring kernels
+    std::vector<BallContact> contacts; // from the collide phase, for the contact phase
+    std::vector<int32_t> contactOf;    // per triangle: its entry in contacts, -1 (scratch of the contact phase)
     uint64_t pinSignature = 0; // hash of the particles with invMass 0, from the last integration
     SpringCache springs;
     LimitCache limit;
@@ -143,6 +155,7 @@ private:
     void phaseIntegrate(float dt);
     void phaseLimit(float dt);
     void phaseCollide(float dt);
+    void phaseContact(float dt);
     void phaseTear();
     void phaseBookkeeping();
     void moveDrivers(float dt);

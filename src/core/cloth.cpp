@@ -191,6 +191,9 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
         syncBendSpring(c, s);
     }
     for (Index p = 0; p < n; ++p) c.refreshInvMass(p);
+    double restSum = 0;
+    for (const Spring& s : c.springs) restSum += s.rest;
+    c.minSplitRest = float(kMinSplitFraction * restSum / double(c.springs.size()));
     Result<Cloth> r;
     r.value = std::move(c);
     return r;

@@ -1,10 +1,14 @@
-// Cloth against balls and the ground.
+// Cloth against balls and the ground, in two phases around the length limit.
 //
-// Balls are resolved against triangles, not only particles: the closest point of each nearby
-// triangle to the ball centre is pushed out to the ball surface, with the correction and the impulse
-// split over the corners by barycentric weight. A ball whose centre crossed a triangle during the
-// sub-step (a fast ball) is caught by a segment-triangle test and the cloth is put back in front of
-// it, so nothing tunnels. Momentum is exchanged both ways: the ball slows down when it hits cloth.
+// Collide (before the limit): balls move, and are resolved against triangles, not only particles:
+// the closest point of each nearby triangle to the ball centre is pushed out to the ball surface,
+// with the correction and the impulse split over the corners by barycentric weight, so momentum is
+// exchanged both ways. Which side of a triangle a ball belongs on is judged from where both started
+// the sub-step, so a fast ball that went through a triangle, or a triangle that went through the
+// ball, is caught and the cloth put back in front of the ball: nothing tunnels.
+// Contact (after the limit): the limit pulls the struck cloth back towards its anchors, into the
+// ball; there the ball gives way, keeping the sides found before. A heavy fast ball is stopped by
+// the taut cloth as by a net, instead of dragging the cloth along until it slips through.
 #include "collide.h"
 
 #include "parallel.h"
@@ -46,16 +50,6 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 }
 
 namespace {
-
-// Does segment p0->p1 pass through triangle abc (its interior or boundary)?
-bool segmentCrossesTriangle(const Vec3& p0, const Vec3& p1, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 n = (b - a).cross(c - a);
-    const float s0 = n.dot(p0 - a), s1 = n.dot(p1 - a);
-    if ((s0 > 0.f) == (s1 > 0.f) || s0 == s1) return false;
-    const Vec3 hit = p0 + (p1 - p0) * (s0 / (s0 - s1));
-    const float e0 = (b - a).cross(hit - a).dot(n), e1 = (c - b).cross(hit - b).dot(n), e2 = (a - c).cross(hit - c).dot(n);
-    return (e0 >= 0.f && e1 >= 0.f && e2 >= 0.f) || (e0 <= 0.f && e1 <= 0.f && e2 <= 0.f);
-}
 
 void integrateBall(Ball& ball, const CollisionSettings& s, const Vec3& gravity, float dt) {
     ball.v += gravity * dt;
@@ -118,48 +112,151 @@ void resolveContact(Cloth& cloth, const Triangle& tri, const Vec3& bary, Ball& b
     }
 }
 
-void collideBall(Cloth& cloth, Ball& ball, const Vec3& c0, const CollisionSettings& s, float dt) {
+// Contact passes of the collide phase after the crossed triangles (they stop once one pushes
+// nothing), and the penetration (fraction of the ball radius) left alone: a contact pushed out
+// exactly sits at the radius, and round-off must not count as another push.
+inline float sq(float a) { return a * a; }
+
+constexpr int kContactPasses = 4;
+constexpr float kContactSlop = 1e-4f;
+
+// Where the corners of a triangle were at the start of the sub-step. Right after the integrator
+// x = x0 + v dt exactly (semi-implicit Euler, Verlet; forward Euler to O(dt^2)), and the collide
+// phase runs right after it.
+inline Vec3 startOf(const Cloth& cloth, Index p, float dt) { return cloth.x[p] - cloth.v[p] * dt; }
+
+// Is point c over triangle abc (its projection along the normal n inside the triangle)?
+inline bool over(const Vec3& c, const Vec3& a, const Vec3& b, const Vec3& cc, const Vec3& n) {
+    const float e0 = (b - a).cross(c - a).dot(n), e1 = (cc - b).cross(c - b).dot(n), e2 = (a - cc).cross(c - cc).dot(n);
+    return (e0 >= 0.f && e1 >= 0.f && e2 >= 0.f) || (e0 <= 0.f && e1 <= 0.f && e2 <= 0.f);
+}
+
+// How a ball touches one triangle: the direction n from the ball centre to where the cloth must be
+// and how far the touching point must move along it.
+struct Touch {
+    Vec3 bary;
+    Vec3 n;
+    float pen = 0.f;
+};
+
+// The contact of a ball (centre c, reach R) with triangle abc (unit normal nt) when the ball belongs
+// on side `side` of the triangle (+1: along nt). A centre on the wrong side, over the triangle, went
+// through it (or the triangle went through the ball): the cloth belongs back in front of the ball.
+// Otherwise the closest point is pushed out to the ball surface.
+inline bool touch(const Vec3& c, float R, const Vec3& a, const Vec3& b, const Vec3& cc, const Vec3& nt, float side,
+                  Touch& t) {
+    const Vec3 q = closestPointOnTriangle(c, a, b, cc, t.bary);
+    if (side * nt.dot(c - a) < 0.f && over(c, a, b, cc, nt)) {
+        t.n = -side * nt;
+        t.pen = R - (q - c).dot(t.n);
+        return t.pen > 0.f;
+    }
+    const Vec3 d = q - c;
+    const float dist2 = d.squaredNorm();
+    if (dist2 >= R * R) return false;
+    const float dist = std::sqrt(dist2);
+    t.n = dist > 1e-6f * R ? Vec3(d / dist) : Vec3(-side * nt);
+    t.pen = R - dist;
+    return true;
+}
+
+// Visits the triangles whose box overlaps [lo, hi] with their corners and unit normal.
+template <class F>
+void forTrianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, F&& f) {
+    for (Index ti = 0; ti < Index(cloth.triangles.size()); ++ti) {
+        const Triangle& tri = cloth.triangles[ti];
+        const Vec3& a = cloth.x[tri.p[0]];
+        const Vec3& b = cloth.x[tri.p[1]];
+        const Vec3& c = cloth.x[tri.p[2]];
+        const Vec3 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
+        if ((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any()) continue;
+        Vec3 nt = (b - a).cross(c - a);
+        const float len = nt.norm();
+        if (!(len > 0.f)) continue;
+        f(ti, tri, a, b, c, Vec3(nt / len));
+    }
+}
+
+// Collide phase, one ball (moved from c0 to ball.x this sub-step). The side a ball belongs on is
+// judged relative to the moving cloth: the ball's start c0 against where the triangle started, so a
+// triangle that moved through the ball counts as crossed as much as a ball that moved through it.
+void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, const CollisionSettings& s, float dt,
+                 PackedParticle* packed, std::vector<BallContact>& contacts) {
     const float R = ball.radius + s.thickness;
     const Vec3 lo = c0.cwiseMin(ball.x).array() - R, hi = c0.cwiseMax(ball.x).array() + R;
-    // Pass 0 resolves only the triangles the ball went through, so that it is back on its side
-    // before pass 1 judges the contacts with their neighbours from the ball centre (a centre lying
-    // in the cloth would otherwise be shoved sideways by them, past the triangle it crossed).
-    for (int pass = 0; pass < 2; ++pass) {
-        for (const Triangle& tri : cloth.triangles) {
-            // Where the ball is now: a pinned triangle met earlier may have pushed it back, and a
-            // stale end point would push it back once more for every triangle it crossed.
-            const Vec3 c1 = ball.x;
-            const Vec3& a = cloth.x[tri.p[0]];
-            const Vec3& b = cloth.x[tri.p[1]];
-            const Vec3& c = cloth.x[tri.p[2]];
-            // Broad phase: triangle box against the swept ball box.
-            const Vec3 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
-            if ((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any()) continue;
-            Vec3 bary;
-            const Vec3 q = closestPointOnTriangle(c1, a, b, c, bary);
-            Vec3 nt = (b - a).cross(c - a);
-            const float ntLen = nt.norm();
-            if (!(ntLen > 0.f)) continue;
-            nt /= ntLen;
-            const float side0 = nt.dot(c0 - a) >= 0.f ? 1.f : -1.f;
-            Vec3 n;
-            float pen;
-            const bool crossed = segmentCrossesTriangle(c0, c1, a, b, c);
-            if (pass == 0 && !crossed) continue;
-            if (crossed) {
-                // Tunnelled this sub-step: the cloth belongs in front of the ball.
-                n = -side0 * nt;
-                pen = R - (q - c1).dot(n);
-            } else {
-                const Vec3 d = q - c1;
-                const float dist = d.norm();
-                if (dist >= R) continue;
-                n = dist > 1e-6f * R ? Vec3(d / dist) : Vec3(-side0 * nt);
-                pen = R - dist;
+    // Pass 0 resolves only the triangles the ball is through, so that it is back on its side before
+    // the later passes judge the contacts with their neighbours from the ball centre (a centre lying
+    // in the cloth would otherwise be shoved sideways by them, past the triangle it crossed). Pushing
+    // one triangle out moves its neighbours' shared corners, so the contact passes repeat until
+    // nothing is left inside the ball: the contact phase must see only what the limit did.
+    const size_t first = contacts.size();
+    for (int pass = 0; pass < 1 + kContactPasses; ++pass) {
+        bool pushed = false;
+        forTrianglesIn(cloth, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
+                                          const Vec3& nt) {
+            const Vec3 a0 = startOf(cloth, tri.p[0], dt);
+            const Vec3 n0 = (startOf(cloth, tri.p[1], dt) - a0).cross(startOf(cloth, tri.p[2], dt) - a0);
+            const float side = n0.dot(c0 - a0) >= 0.f ? 1.f : -1.f;
+            const bool through = side * nt.dot(ball.x - a) < 0.f && over(ball.x, a, b, c, nt);
+            if (through != (pass == 0)) return;
+            Touch t;
+            if (!touch(ball.x, R, a, b, c, nt, side, t) || t.pen <= kContactSlop * R) return;
+            resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction, dt);
+            for (Index p : tri.p) {
+                PackedParticle& q = packed[p];
+                for (int k = 0; k < 3; ++k) q.x[k] = cloth.x[p][k], q.v[k] = cloth.v[p][k];
             }
-            if (pen > 0.f) resolveContact(cloth, tri, bary, ball, n, pen, s.friction, dt);
-        }
+            pushed = true;
+            for (Index p : tri.p) cloth.flags[p] |= kTouched;
+            for (size_t i = first; i < contacts.size(); ++i)
+                if (contacts[i].triangle == ti) return;
+            contacts.push_back(BallContact{ti, ballIndex, int8_t(side), {}});
+        });
+        if (pass > 0 && !pushed) break;
     }
+    for (size_t i = first; i < contacts.size(); ++i)
+        for (int k = 0; k < 3; ++k) contacts[i].at[k] = cloth.x[cloth.triangles[contacts[i].triangle].p[k]];
+}
+
+// Contact phase, one ball. The limit has put the cloth where its springs hold it. Where it pulled a
+// triangle the ball pressed on back into the ball (its springs reached the strain the limit lets a
+// ball stretch them to, see phaseLimit), the cloth holds and the ball gives way: it is moved out and
+// loses its approach relative to the cloth, because pushing that cloth again would undo the limit
+// and a heavy ball would drag the cloth along at any strain, and at last through itself. Any other
+// triangle in the ball (moved in by the limit pulling on its neighbours) is pushed out two-way, as in
+// the collide phase. The sides recorded by the collide phase hold: a triangle the limit snapped
+// through the ball centre pushes the ball back. An immovable ball (mass 0) always pushes the cloth.
+void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, const std::vector<BallContact>& contacts,
+                const int32_t* contactOf) {
+    const float R = ball.radius + s.thickness;
+    const Vec3 lo = ball.x.array() - R, hi = ball.x.array() + R;
+    const float moveTol2 = sq(1e-5f * R);
+    for (int pass = 0; pass < 2; ++pass)
+        forTrianglesIn(cloth, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
+                                          const Vec3& nt) {
+            const BallContact* contact = contactOf[ti] >= 0 ? &contacts[contactOf[ti]] : nullptr;
+            const float now = nt.dot(ball.x - a) >= 0.f ? 1.f : -1.f;
+            const float side = contact ? float(contact->side) : now;
+            const bool through = side != now && over(ball.x, a, b, c, nt);
+            if (through != (pass == 0)) return;
+            Touch t;
+            if (!touch(ball.x, R, a, b, c, nt, side, t) || t.pen <= kContactSlop * R) return;
+            bool held = false;
+            if (contact)
+                for (int k = 0; k < 3; ++k) held |= (cloth.x[tri.p[k]] - contact->at[k]).squaredNorm() > moveTol2;
+            if (!held || ball.mass <= 0.f) {
+                resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction, dt);
+                return;
+            }
+            // Moved back by pen, the ball loses pen / dt of its approach (position-based: the
+            // velocity follows the correction), never more than its approach relative to the cloth.
+            ball.x -= t.n * t.pen;
+            Vec3 vq = Vec3::Zero();
+            for (int i = 0; i < 3; ++i) vq += t.bary[i] * cloth.v[tri.p[i]];
+            const float approach = (ball.v - vq).dot(t.n);
+            if (approach > 0.f) ball.v -= std::min(approach, t.pen / dt) * t.n;
+        });
+    if (s.ground && ball.x.y() - ball.radius < s.groundHeight) ball.x.y() = s.groundHeight + ball.radius;
 }
 
 void collideGround(Cloth& cloth, const CollisionSettings& s, float dt) {
@@ -189,12 +286,27 @@ void collideGround(Cloth& cloth, const CollisionSettings& s, float dt) {
 
 } // namespace
 
-void collideBallsAndGround(Cloth& cloth, std::vector<Ball>& balls, const CollisionSettings& s, const Vec3& gravity,
-                           float dt) {
-    for (Ball& ball : balls) {
+void collideBalls(Cloth& cloth, std::vector<Ball>& balls, const CollisionSettings& s, const Vec3& gravity, float dt,
+                  PackedParticle* packed, std::vector<BallContact>& contacts) {
+    contacts.clear();
+    for (uint32_t i = 0; i < balls.size(); ++i) {
+        Ball& ball = balls[i];
         const Vec3 c0 = ball.x;
         integrateBall(ball, s, gravity, dt);
-        collideBall(cloth, ball, c0, s, dt);
+        collideBall(cloth, ball, i, c0, s, dt, packed, contacts);
+    }
+}
+
+void settleContacts(Cloth& cloth, std::vector<Ball>& balls, const CollisionSettings& s, float dt, bool clothHeld,
+                    const std::vector<BallContact>& contacts, std::vector<int32_t>& contactOf) {
+    contactOf.resize(cloth.triangles.size(), -1);
+    for (const BallContact& c : contacts)
+        for (Index p : cloth.triangles[c.triangle].p) cloth.flags[p] &= uint8_t(~kTouched);
+    for (uint32_t i = 0; i < balls.size() && clothHeld; ++i) {
+        for (size_t k = 0; k < contacts.size(); ++k)
+            if (contacts[k].ball == i) contactOf[contacts[k].triangle] = int32_t(k);
+        settleBall(cloth, balls[i], s, dt, contacts, contactOf.data());
+        for (const BallContact& c : contacts) contactOf[c.triangle] = -1;
     }
     if (s.ground) collideGround(cloth, s, dt);
 }

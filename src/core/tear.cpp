@@ -68,11 +68,12 @@ bool basicTear(Cloth& c, Index s, float strain, const TearContext& ctx) {
     const Spring sp = c.springs[s];
     const SpringTopo topo = c.springTopo[s];
     const Index a = sp.a, b = sp.b;
-    // Never create a degenerate rest triangle: refuse to halve edges that are already tiny.
+    // Never create a degenerate rest triangle or a sliver of vanishing mass: refuse to halve edges
+    // that are already short.
     double scale = 0;
     for (Index t : topo.tri)
         if (t != kNone) scale = std::max(scale, c.triangles[t].restArea);
-    if (!(sp.rest > 1e-6f) || !(scale > 1e-14)) return false;
+    if (!(sp.rest > 1e-6f) || sp.rest < c.minSplitRest || !(scale > 1e-14)) return false;
 
     if (topo.bend != kNone) removeBendSpring(c, topo.bend);
     const Vec3d restM = 0.5 * (c.rest[a] + c.rest[b]);

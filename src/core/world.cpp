@@ -23,7 +23,8 @@
 namespace clothtear {
 
 const char* phaseName(Phase p) {
-    static const char* names[] = {"forces", "springs", "wind", "integrate", "limit", "collide", "tear", "bookkeeping"};
+    static const char* names[] = {"forces",  "springs", "wind", "integrate",  "collide",
+                                  "limit", "contact", "tear", "bookkeeping"};
     return names[int(p)];
 }
 
@@ -153,7 +154,6 @@ void World::step() {
 
 void World::substep() {
     const float dt = settings.time.frameDt / float(settings.time.substeps);
-    const bool needCollide = !balls.empty() || settings.collision.ground;
     {
         PhaseTimer t(profile, Phase::Forces);
         phaseForces(dt);
@@ -170,14 +170,18 @@ void World::substep() {
         PhaseTimer t(profile, Phase::Integrate);
         phaseIntegrate(dt);
     }
+    if (!balls.empty()) {
+        PhaseTimer t(profile, Phase::Collide);
+        phaseCollide(dt);
+    }
     // The limit pass doubles as the strain scan, so it runs when either needs it.
     if ((settings.limit.enabled && settings.limit.iterations > 0) || settings.tear.enabled) {
         PhaseTimer t(profile, Phase::Limit);
         phaseLimit(dt);
     }
-    if (needCollide) {
-        PhaseTimer t(profile, Phase::Collide);
-        phaseCollide(dt);
+    if (!balls.empty() || settings.collision.ground) {
+        PhaseTimer t(profile, Phase::Contact);
+        phaseContact(dt);
     }
     if (settings.tear.enabled && !scratch_.tearCandidates.empty()) {
         PhaseTimer t(profile, Phase::Tear);
@@ -513,6 +517,7 @@ constexpr float kTetherSlack = 1e-2f;
 // What a limit pass needs, fixed for the sub-step.
 struct LimitParams {
     float maxRatio;      // 1 + max_stretch
+    float heldRatio;     // 1 + the strain a ball may stretch the springs it touches to (tear threshold)
     float tearRatio;     // 1 + tear threshold (1e30 without tearing)
     float weakRatio;     // 1 + the lowest threshold for weak points and one-point connections
     float relaxation;
@@ -636,7 +641,13 @@ void World::phaseLimit(float dt) {
     P.dt = dt;
     P.velocityFix = settings.time.integrator != Integrator::Verlet;
     const float minTearRatio = std::min(P.tearRatio, P.weakRatio);
+    P.heldRatio = std::max(P.maxRatio, 1.f + TS.threshold);
     const float doneRatio = P.maxRatio * (1.f + kLimitTolerance);
+    const float heldDoneRatio = P.heldRatio * (1.f + kLimitTolerance);
+    // Particles under a ball (collide phase): the ball, not the limit, decides where they are, up to
+    // the tear threshold on their springs, so a ball pressing on the cloth can stretch it and tear it
+    // (Onal 4.1). Tethers through them do not pull either: what hangs below a ball hangs from it.
+    const std::vector<BallContact>& contacts = scratch_.contacts;
     // The scan flags springs over the limit and those over a tear threshold (which may be lower).
     const float scanRatio = std::min(P.limiting ? doneRatio : 1e30f, minTearRatio);
     // The scan reads the spring cache and packed positions (from phaseSprings and the integrator).
@@ -683,9 +694,15 @@ void World::phaseLimit(float dt) {
 
     // Is spring i over its limit (by more than the tolerance)? Exempt if it is a candidate that
     // tears this sub-step.
-    auto overLimit = [&](const Spring& s, float len2) { return len2 > sq(s.rest * doneRatio); };
+    auto underBall = [&](const Spring& s) { return ((flags[s.a] | flags[s.b]) & kTouched) != 0; };
+    auto overLimit = [&](const Spring& s, float len2) {
+        return len2 > sq(s.rest * (underBall(s) ? heldDoneRatio : doneRatio));
+    };
+    // A spring too short to halve is limited even as a candidate: if its tear fails (no weak-point
+    // path, too short for a basic tear) it must not stay overstretched.
+    const float minSplitRest = cloth.minSplitRest;
     auto exempt = [&](const Spring& s, float len2) {
-        if (len2 < sq(s.rest * minTearRatio)) return false;
+        if (len2 < sq(s.rest * minTearRatio) || s.rest < minSplitRest) return false;
         const bool weak = (flags[s.a] | flags[s.b]) & (kWeak | kHinge);
         return len2 >= sq(s.rest * (weak ? P.weakRatio : P.tearRatio)) && std::sqrt(len2) / s.rest - 1.f >= exemptStrain;
     };
@@ -702,7 +719,9 @@ void World::phaseLimit(float dt) {
                 continue;
             }
             l[keep++] = i;
-            if (!exempt(s, len2)) corrected += addCorrection(s, d, len2, s.rest * P.maxRatio, invMass, c, touched);
+            if (!exempt(s, len2))
+                corrected +=
+                    addCorrection(s, d, len2, s.rest * (underBall(s) ? P.heldRatio : P.maxRatio), invMass, c, touched);
         }
         l.resize(keep);
         return corrected;
@@ -736,7 +755,7 @@ void World::phaseLimit(float dt) {
                 if (len2 >= sq(s.rest * (weak ? P.weakRatio : P.tearRatio)))
                     found[t].push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
             }
-            if (P.limiting && len2 > sq(s.rest * doneRatio)) {
+            if (P.limiting && overLimit(s, len2)) {
                 listed[i] = 1;
                 list.push_back(Index(i));
             }
@@ -748,7 +767,7 @@ void World::phaseLimit(float dt) {
         // thread does moves what this one reads. First find the tethers that must not pull.
         size_t candidates = 0;
         for (int k = 0; k < nt; ++k) candidates += found[k].size();
-        const bool anyFound = candidates > 0;
+        const bool anyFound = candidates > 0 || !contacts.empty();
         if (anyFound) {
             if (t == 0) {
                 if (useTethers) {
@@ -758,6 +777,8 @@ void World::phaseLimit(float dt) {
                             seeds.push_back(springs[f.spring].a);
                             seeds.push_back(springs[f.spring].b);
                         }
+                    for (const BallContact& c : contacts)
+                        for (Index p : cloth.triangles[c.triangle].p) seeds.push_back(p);
                     markTethersThrough(C, seeds, C.cut);
                 }
                 // More candidates than tear.max_per_step: only the most strained are exempt.
@@ -840,7 +861,14 @@ void World::phaseTear() {
 
 void World::phaseCollide(float dt) {
     const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
-    collideBallsAndGround(cloth, balls, settings.collision, g, dt);
+    collideBalls(cloth, balls, settings.collision, g, dt, scratch_.packed.data(), scratch_.contacts);
+}
+
+void World::phaseContact(float dt) {
+    // Without limiting nothing holds the cloth back against a ball: the collide phase said it all.
+    const bool held = settings.limit.enabled && settings.limit.iterations > 0;
+    settleContacts(cloth, balls, settings.collision, dt, held, scratch_.contacts, scratch_.contactOf);
+    scratch_.contacts.clear();
 }
 
 // ============================================================================================= [MISC]
