@@ -101,6 +101,7 @@ struct StepScratch {
     // Hot-loop state (world.cpp, [SPRINGS] and [LIMIT]).
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its buffer may hold
     std::vector<std::vector<Eigen::Vector4f>> threadCorr; // per thread: limit corrections (xyz, count)
+    std::vector<std::vector<Eigen::Vector4f>> threadCorrV; // per thread: limit velocity changes (xyz)
     std::vector<std::vector<Index>> threadActive;   // per thread: springs the limit still works on
     std::vector<std::vector<Index>> threadTouched;  // per thread: particles with a correction this pass
     std::vector<std::vector<Index>> threadMoved;    // per thread: particles the last Jacobi pass moved

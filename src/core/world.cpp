@@ -529,56 +529,68 @@ struct LimitParams {
 // Corrections of one thread: xyz sum and the number of springs in w.
 using Corr = Eigen::Vector4f;
 
-// Provot correction of spring s (longer than maxLen), split by inverse mass, into `corr`.
-// Pinned ends get nothing (not even a count), so the limit never writes a pinned particle: the
-// tethers read their anchors while other threads apply corrections. False if both ends are pinned.
-// Particles getting their first correction of the pass go on `touched`.
-inline bool addCorrection(const Spring& s, const Vec3& d, float len2, float maxLen, const float* invMass, Corr* corr,
-                          std::vector<Index>& touched) {
+// Counts the correction spring s will give its ends (sweep 1 of a pass). Pinned ends get nothing
+// (not even a count), so the limit never writes a pinned particle: the tethers read their anchors
+// while other threads apply corrections. False if both ends are pinned. Particles getting their
+// first count of the pass go on `touched`.
+inline bool countCorrection(const Spring& s, const float* invMass, Corr* corr, std::vector<Index>& touched) {
     const float wa = invMass[s.a], wb = invMass[s.b];
     if (wa + wb == 0.f) return false;
-    const float len = std::sqrt(len2);
-    const Vec3 c = d * ((len - maxLen) / (len * (wa + wb)));
     if (wa > 0.f) {
         if (corr[s.a].w() == 0.f) touched.push_back(s.a);
-        corr[s.a] += Corr(wa * c.x(), wa * c.y(), wa * c.z(), 1.f);
+        corr[s.a].w() += 1.f;
     }
     if (wb > 0.f) {
         if (corr[s.b].w() == 0.f) touched.push_back(s.b);
-        corr[s.b] += Corr(-wb * c.x(), -wb * c.y(), -wb * c.z(), 1.f);
+        corr[s.b].w() += 1.f;
     }
     return true;
 }
 
-// Moves particle p by delta. Inelastic velocity fix: cancel the velocity that carried p away from
-// where the limit puts it, up to |delta| / dt, but never add velocity towards it. (Turning the whole
-// correction into velocity, as v += delta / dt would, injects energy when a long overstretched
-// spring is pulled back and sets off tear cascades.) dir * min(|delta| / dt, away) with
-// dir = delta / |delta|, away = -v.dir, is delta * min(1 / dt, -v.delta / |delta|^2): no square root.
-inline void moveParticle(Vec3& x, Vec3& v, const Vec3& delta, const LimitParams& P) {
-    x += delta;
+// Provot correction of spring s (longer than maxLen), split by inverse mass, over-relaxed and
+// divided by `share` (the larger count of corrections its two ends get this pass), into `corr`.
+// Both ends get the same fraction of one correction pair, so the pass conserves momentum, as
+// Provot's pairwise correction does (dividing each particle's sum by its own count would not).
+// With the velocity fix, `corrV` gets an inelastic velocity change, again as an equal and opposite
+// pair: the ends' separating speed along the spring is cancelled, up to correction / dt, never
+// reversed. (Turning the whole correction into velocity, v += delta / dt, would inject energy when
+// a long overstretched spring is pulled back and set off tear cascades.)
+inline void addCorrection(const Spring& s, const Vec3& d, float len2, float maxLen, float share, const float* invMass,
+                          const Vec3* v, const LimitParams& P, Corr* corr, Corr* corrV) {
+    const float wa = invMass[s.a], wb = invMass[s.b];
+    const float len = std::sqrt(len2);
+    const float excess = (len - maxLen) * P.relaxation / share;
+    const Vec3 n = d / len;
+    const Vec3 c = n * (excess / (wa + wb));
+    corr[s.a].head<3>() += wa * c;
+    corr[s.b].head<3>() -= wb * c;
     if (!P.velocityFix) return;
-    const float away = -v.dot(delta);
-    if (away > 0.f) v += delta * std::min(1.f / P.dt, away / delta.squaredNorm());
+    const float separating = (v[s.b] - v[s.a]).dot(n);
+    if (!(separating > 0.f)) return;
+    const Vec3 dv = n * (std::min(separating, excess / P.dt) / (wa + wb));
+    corrV[s.a].head<3>() += wa * dv;
+    corrV[s.b].head<3>() -= wb * dv;
 }
 
-// Applies the averaged corrections of the particles on the `touched` lists of threads [0, nt) that
-// `mine` accepts (each particle is accepted by exactly one caller), clears what it read (the
-// buffers are zero between passes), and lists the particles it moved in `moved`, stamped in movedIn.
+// Applies the corrections of the particles on the `touched` lists of threads [0, nt) that `mine`
+// accepts (each particle is accepted by exactly one caller), clears what it read (the buffers are
+// zero between passes), and lists the particles it moved in `moved`, stamped in movedIn.
 template <class Mine>
 inline void applyCorrections(const std::vector<std::vector<Index>>& touched, std::vector<std::vector<Corr>>& corr,
-                             int nt, Mine mine, Vec3* x, Vec3* v, const LimitParams& P, uint32_t* movedIn,
-                             uint32_t stamp, std::vector<Index>& moved) {
+                             std::vector<std::vector<Corr>>& corrV, int nt, Mine mine, Vec3* x, Vec3* v,
+                             uint32_t* movedIn, uint32_t stamp, std::vector<Index>& moved) {
     for (int k = 0; k < nt; ++k)
         for (Index p : touched[k]) {
             if (!mine(p) || corr[k][p].w() == 0.f) continue; // not ours, or done from an earlier list
-            Corr sum = corr[k][p];
-            corr[k][p].setZero();
-            for (int j = k + 1; j < nt; ++j) {
+            Corr sum = Corr::Zero(), dv = Corr::Zero();
+            for (int j = k; j < nt; ++j) {
                 sum += corr[j][p];
+                dv += corrV[j][p];
                 corr[j][p].setZero();
+                corrV[j][p].setZero();
             }
-            moveParticle(x[p], v[p], sum.head<3>() * (P.relaxation / sum.w()), P);
+            x[p] += sum.head<3>();
+            v[p] += dv.head<3>();
             movedIn[p] = stamp;
             moved.push_back(p);
         }
@@ -607,9 +619,10 @@ void World::refreshLimitCache() {
 }
 
 // Provot length limiting (Onal 2.1.1): a spring longer than rest * (1 + maxStretch) pulls its ends
-// together, split by inverse mass; pinned ends never move. Corrections are averaged per particle
-// (Jacobi) and over-relaxed, so the result does not depend on spring order: a fixed row-major
-// Gauss-Seidel sweep over stiff links is what makes some solvers blow up at high resolution.
+// together, split by inverse mass; pinned ends never move. Corrections are Jacobi (each spring's
+// divided by the larger number of corrections its ends get, so momentum is conserved) and
+// over-relaxed, so the result does not depend on spring order: a fixed row-major Gauss-Seidel
+// sweep over stiff links is what makes some solvers blow up at high resolution.
 // A spring that tears this sub-step is left alone (Onal 3.2): the first pass records every spring at
 // or above its tear threshold (the tear phase's candidates) and skips them. If there are more than
 // tear.max_per_step candidates, only the most strained max_per_step are exempt; the later passes
@@ -663,12 +676,16 @@ void World::phaseLimit(float dt) {
     const uint8_t* flags = cloth.flags.data();
     const Spring* springs = cloth.springs.data();
     auto& corr = scratch_.threadCorr;
+    auto& corrV = scratch_.threadCorrV;
     auto& active = scratch_.threadActive;
     auto& moved = scratch_.threadMoved;
     auto& touched = scratch_.threadTouched;
     auto& found = scratch_.threadFound;
     if (corr.size() != size_t(threads)) corr.resize(threads);
+    if (corrV.size() != size_t(threads)) corrV.resize(threads);
     for (auto& c : corr)
+        if (c.size() != n) c.resize(n, Corr::Zero());
+    for (auto& c : corrV)
         if (c.size() != n) c.resize(n, Corr::Zero());
     active.resize(threads);
     moved.resize(threads);
@@ -706,25 +723,40 @@ void World::phaseLimit(float dt) {
         const bool weak = (flags[s.a] | flags[s.b]) & (kWeak | kHinge);
         return len2 >= sq(s.rest * (weak ? P.weakRatio : P.tearRatio)) && std::sqrt(len2) / s.rest - 1.f >= exemptStrain;
     };
-    // One Jacobi pass over list `l` into buffer c; drops the springs within the limit.
-    auto work1 = [&](std::vector<Index>& l, Corr* c, std::vector<Index>& touched) {
+    // A Jacobi pass is two sweeps over the lists. Sweep 1 drops the springs back within the limit
+    // and counts the corrections each particle gets (into buffer c). Sweep 2 adds the corrections,
+    // each spring's divided by the larger total count of its ends (over all `nc` count buffers).
+    auto count1 = [&](std::vector<Index>& l, Corr* c, std::vector<Index>& touched) {
         int corrected = 0;
         size_t keep = 0;
         for (Index i : l) {
             const Spring& s = springs[i];
-            const Vec3 d = x[s.b] - x[s.a];
-            const float len2 = d.squaredNorm();
+            const float len2 = (x[s.b] - x[s.a]).squaredNorm();
             if (!overLimit(s, len2)) {
                 listed[i] = 0;
                 continue;
             }
             l[keep++] = i;
-            if (!exempt(s, len2))
-                corrected +=
-                    addCorrection(s, d, len2, s.rest * (underBall(s) ? P.heldRatio : P.maxRatio), invMass, c, touched);
+            if (!exempt(s, len2)) corrected += countCorrection(s, invMass, c, touched);
         }
         l.resize(keep);
         return corrected;
+    };
+    auto correct1 = [&](const std::vector<Index>& l, Corr* c, Corr* cv, int nc) {
+        for (Index i : l) {
+            const Spring& s = springs[i];
+            if (invMass[s.a] + invMass[s.b] == 0.f) continue;
+            const Vec3 d = x[s.b] - x[s.a];
+            const float len2 = d.squaredNorm();
+            if (exempt(s, len2)) continue;
+            float ca = 0.f, cb = 0.f;
+            for (int k = 0; k < nc; ++k) {
+                ca += corr[k][s.a].w();
+                cb += corr[k][s.b].w();
+            }
+            addCorrection(s, d, len2, s.rest * (underBall(s) ? P.heldRatio : P.maxRatio), std::max(ca, cb), invMass,
+                          v, P, c, cv);
+        }
     };
     // Lists the springs of the particles in `m` that a pass pushed over the limit. A spring whose
     // two ends both moved is listed from its lower-numbered end only.
@@ -812,20 +844,24 @@ void World::phaseLimit(float dt) {
                 if (t == 0) {
                     int corrected = 0;
                     touched[0].clear();
-                    for (int k = 0; k < nt; ++k) corrected += work1(active[k], corr[0].data(), touched[0]);
+                    for (int k = 0; k < nt; ++k) corrected += count1(active[k], corr[0].data(), touched[0]);
+                    for (int k = 0; k < nt; ++k) correct1(active[k], corr[0].data(), corrV[0].data(), 1);
                     moved[0].clear();
-                    applyCorrections(touched, corr, 1, [](Index) { return true; }, x, v, P, movedIn, stamp, moved[0]);
+                    applyCorrections(touched, corr, corrV, 1, [](Index) { return true; }, x, v, movedIn, stamp,
+                                     moved[0]);
                     expand(moved[0], stamp, active[0]);
                     work[0] = corrected;
                     for (int k = 1; k < nt; ++k) work[k] = 0;
                 }
             } else {
                 touched[t].clear();
-                work[t] = work1(list, corr[t].data(), touched[t]);
+                work[t] = count1(list, corr[t].data(), touched[t]);
+                parallelBarrier(nt); // counts complete
+                correct1(list, corr[t].data(), corrV[t].data(), nt);
                 parallelBarrier(nt); // corrections complete
                 moved[t].clear();
                 auto mine = [&](Index p) { return p >= pc.begin && p < pc.end; };
-                applyCorrections(touched, corr, nt, mine, x, v, P, movedIn, stamp, moved[t]);
+                applyCorrections(touched, corr, corrV, nt, mine, x, v, movedIn, stamp, moved[t]);
                 parallelBarrier(nt); // positions and stamps complete
                 expand(moved[t], stamp, list);
             }
