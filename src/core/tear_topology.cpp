@@ -66,10 +66,39 @@ std::vector<Fan> fansAround(const Cloth& cloth, Index p) {
     return fans;
 }
 
+// The same answer as isTearTip(fansAround(p)) / fans.size() > 1, without building the fans: it
+// runs for every corner after every tear, and allocating the fan vectors was most of a tear's cost.
+// Walks from p's first triangle both ways; fewer triangles reached than p has: two or more fans.
 uint8_t fanFlags(const Cloth& cloth, Index p) {
-    const std::vector<Fan> fans = fansAround(cloth, p);
-    if (fans.size() > 1) return kHinge;
-    return isTearTip(cloth, fans, p) ? kWeak : 0;
+    const std::vector<Index>& tris = cloth.particleTris[p];
+    if (tris.empty()) return 0;
+    const Index start = tris[0];
+    size_t reached = 1;
+    // Leaves `start` through spoke e and crosses spokes until a border spoke (returned) or back at
+    // start (kNone: closed).
+    auto walk = [&](Index e) {
+        Index t = start;
+        for (size_t guard = 0; guard <= tris.size(); ++guard) {
+            const Index next = otherTriangle(cloth.springTopo[e], t);
+            if (next == kNone) return e;
+            if (next == start) return kNone;
+            ++reached;
+            Index s1, s2;
+            spokesOf(cloth.triangles[next], p, s1, s2);
+            e = (s1 == e) ? s2 : s1;
+            t = next;
+        }
+        return kNone;
+    };
+    Index s1, s2;
+    spokesOf(cloth.triangles[start], p, s1, s2);
+    const Index last = walk(s2);
+    if (last == kNone) return reached < tris.size() ? kHinge : 0; // closed fan
+    const Index first = walk(s1);
+    if (reached < tris.size()) return kHinge;
+    if (reached < 2) return 0; // a tip has at least two triangles (three spokes)
+    const Index q1 = otherEnd(cloth.springs[first], p), q2 = otherEnd(cloth.springs[last], p);
+    return q1 != q2 && cloth.rest[q1] == cloth.rest[q2] ? kWeak : 0;
 }
 
 

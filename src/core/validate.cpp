@@ -2,6 +2,8 @@
 // in Debug builds and when tear.validate is on; the tests call it after every tear of long runs.
 #include "clothtear/tear.h"
 
+#include "tear_topology.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -108,6 +110,12 @@ std::string validateCloth(const Cloth& c, double expectedArea, double expectedUv
             if (t >= nt || cornerOf(c.triangles[t], Index(p)) < 0) return at("particle", p) + "lists a triangle it is not a corner of";
         if (!relClose(share[p], c.areaShare[p], 1e-9)) return at("particle", p) + "mass share does not match its triangles";
         if (!c.x[p].allFinite() || !c.v[p].allFinite()) return at("particle", p) + "non-finite position or velocity";
+    }
+    // Weak-point and hinge flags (Onal 3.2.2, 3.2.3) as the fans say, built the slow way here.
+    for (size_t p = 0; p < np; ++p) {
+        const std::vector<Fan> fans = fansAround(c, Index(p));
+        const uint8_t expected = fans.size() > 1 ? kHinge : isTearTip(c, fans, Index(p)) ? kWeak : 0;
+        if ((c.flags[p] & (kWeak | kHinge)) != expected) return at("particle", p) + "weak/hinge flag does not match its fans";
     }
     if (expectedArea > 0 && !relClose(totalArea, expectedArea, 1e-9))
         return "total rest area changed: " + std::to_string(totalArea) + " vs " + std::to_string(expectedArea);
