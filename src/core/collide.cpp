@@ -160,16 +160,31 @@ inline bool touch(const Vec3& c, float R, const Vec3& a, const Vec3& b, const Ve
     return true;
 }
 
-// Visits the triangles whose box overlaps [lo, hi] with their corners and unit normal.
-template <class F>
-void forTrianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, F&& f) {
+inline bool boxesOverlap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi) {
+    const Vec3 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
+    return !((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any());
+}
+
+// The triangles whose box overlaps [lo, hi]: one scan of the cloth per ball and phase; the contact
+// passes then look at these only.
+std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi) {
+    std::vector<Index> near;
     for (Index ti = 0; ti < Index(cloth.triangles.size()); ++ti) {
+        const Triangle& tri = cloth.triangles[ti];
+        if (boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near.push_back(ti);
+    }
+    return near;
+}
+
+// Visits the triangles of `near` whose box (now) overlaps [lo, hi] with their corners and unit normal.
+template <class F>
+void forTrianglesIn(const Cloth& cloth, const std::vector<Index>& near, const Vec3& lo, const Vec3& hi, F&& f) {
+    for (Index ti : near) {
         const Triangle& tri = cloth.triangles[ti];
         const Vec3& a = cloth.x[tri.p[0]];
         const Vec3& b = cloth.x[tri.p[1]];
         const Vec3& c = cloth.x[tri.p[2]];
-        const Vec3 tlo = a.cwiseMin(b).cwiseMin(c), thi = a.cwiseMax(b).cwiseMax(c);
-        if ((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any()) continue;
+        if (!boxesOverlap(a, b, c, lo, hi)) continue;
         Vec3 nt = (b - a).cross(c - a);
         const float len = nt.norm();
         if (!(len > 0.f)) continue;
@@ -190,9 +205,11 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
     // one triangle out moves its neighbours' shared corners, so the contact passes repeat until
     // nothing is left inside the ball: the contact phase must see only what the limit did.
     const size_t first = contacts.size();
+    // Pushed triangles move away from the ball; a margin of R more covers those pushed into the box.
+    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R);
     for (int pass = 0; pass < 1 + kContactPasses; ++pass) {
         bool pushed = false;
-        forTrianglesIn(cloth, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
+        forTrianglesIn(cloth, near, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
                                           const Vec3& nt) {
             const Vec3 a0 = startOf(cloth, tri.p[0], dt);
             const Vec3 n0 = (startOf(cloth, tri.p[1], dt) - a0).cross(startOf(cloth, tri.p[2], dt) - a0);
@@ -231,8 +248,9 @@ void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, 
     const float R = ball.radius + s.thickness;
     const Vec3 lo = ball.x.array() - R, hi = ball.x.array() + R;
     const float moveTol2 = sq(1e-5f * R);
+    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R);
     for (int pass = 0; pass < 2; ++pass)
-        forTrianglesIn(cloth, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
+        forTrianglesIn(cloth, near, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
                                           const Vec3& nt) {
             const BallContact* contact = contactOf[ti] >= 0 ? &contacts[contactOf[ti]] : nullptr;
             const float now = nt.dot(ball.x - a) >= 0.f ? 1.f : -1.f;
