@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -64,4 +66,22 @@ TEST(TearScenes, PullAndTensionTearAndStayFinite) {
         EXPECT_NEAR(r["rest_area"].get<double>(), 36.0, 36.0 * 1e-9) << scene;
         EXPECT_NEAR(r["uv_area"].get<double>(), 1.0, 1e-9) << scene;
     }
+}
+
+// Onal 4.2: pulled straight down at the bottom centre, the cloth tears next to the grab and the cut
+// runs across the pull (horizontally: its extent in x exceeds its extent in y).
+TEST(TearScenes, PullTearsNextToTheGrabAcrossThePull) {
+    const nlohmann::json r = runScene("pull", 4.0, "--set pull.angle=0");
+    ASSERT_TRUE(r["finite"].get<bool>());
+    const nlohmann::json& ev = r["tear_events"];
+    ASSERT_GE(ev.size(), 3u);
+    const double grabY = -3.0; // bottom edge of the 6 m cloth
+    double xMin = 1e9, xMax = -1e9, yMin = 1e9, yMax = -1e9;
+    for (const auto& e : ev) {
+        const double x = e["rest"][0].get<double>(), y = e["rest"][1].get<double>();
+        xMin = std::min(xMin, x), xMax = std::max(xMax, x), yMin = std::min(yMin, y), yMax = std::max(yMax, y);
+    }
+    const double x0 = ev[0]["rest"][0].get<double>(), y0 = ev[0]["rest"][1].get<double>();
+    EXPECT_LT(std::hypot(x0, y0 - grabY), 0.5) << "first tear at " << x0 << ", " << y0;
+    EXPECT_GT(xMax - xMin, 2.0 * (yMax - yMin)) << "x " << xMin << ".." << xMax << ", y " << yMin << ".." << yMax;
 }
