@@ -6,7 +6,11 @@
 
 namespace clothtear {
 
-enum class Integrator : int32_t { SemiImplicitEuler = 0, ForwardEuler = 1, Verlet = 2 };
+// The first three are explicit (springs as forces, src/core/world.cpp [INTEGRATE]); the last two are
+// the references a user would pick instead: implicit Euler (src/core/implicit_euler.h) and XPBD
+// (src/core/xpbd.h), both stable at any sub-step and never touched by the stability guard.
+enum class Integrator : int32_t { SemiImplicitEuler = 0, ForwardEuler = 1, Verlet = 2, ImplicitEuler = 3, Xpbd = 4 };
+inline bool isExplicit(Integrator i) { return i == Integrator::SemiImplicitEuler || i == Integrator::ForwardEuler || i == Integrator::Verlet; }
 enum class AirModel : int32_t { Drag = 0, Keserica = 1 };
 enum class MeshType : int32_t { Grid = 0, Irregular = 1, Obj = 2 };
 enum class PinMode : int32_t { None = 0, TopEdge = 1, TopCorners = 2, LeftRightEdges = 3, LeftEdge = 4 };
@@ -17,6 +21,8 @@ struct TimeSettings {
     Integrator integrator = Integrator::SemiImplicitEuler;
     float verletFriction = 0.01f; // fraction of velocity lost per Verlet step (Keserica 2.2.1 "f"), [0, 1]
     bool stabilityGuard = true;   // cap each spring's stiffness/damping to its explicit stability limit
+    float cgTolerance = 1e-5f;    // relative residual, [1e-10, 0.1]  implicit Euler: conjugate-gradient stop
+    int32_t cgMaxIterations = 200; // count, [1, 100000]  implicit Euler: conjugate-gradient iteration cap
 };
 
 struct MaterialSettings {

@@ -13,6 +13,7 @@
 #include "clothtear/types.h"
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct StepProfile {
     std::array<double, int(Phase::Count)> ms{};     // accumulated milliseconds per phase
     std::array<uint64_t, int(Phase::Count)> runs{}; // how often each phase was entered
     uint64_t substeps = 0;
+    uint64_t solverIterations = 0; // implicit Euler: conjugate-gradient iterations, summed
     void reset() { *this = StepProfile{}; }
 };
 
@@ -94,6 +96,19 @@ struct SpringCache {
     uint64_t key = ~uint64_t(0);
 };
 
+struct ImplicitEulerCache; // src/core/implicit_euler.h
+// The implicit integrator's matrix and pattern. A cache that can be rebuilt at any time: a copied
+// World starts with an empty one.
+struct ImplicitCacheHolder {
+    std::unique_ptr<ImplicitEulerCache> cache;
+    ImplicitCacheHolder();
+    ~ImplicitCacheHolder();
+    ImplicitCacheHolder(const ImplicitCacheHolder&);
+    ImplicitCacheHolder& operator=(const ImplicitCacheHolder&);
+    ImplicitCacheHolder(ImplicitCacheHolder&&) noexcept;
+    ImplicitCacheHolder& operator=(ImplicitCacheHolder&&) noexcept;
+};
+
 // Work arrays of the step, kept between steps so the step does not allocate.
 struct StepScratch {
     std::vector<std::vector<Eigen::Vector4f>> threadAcc; // per thread force buffers (xyz), zero between sub-steps
@@ -110,8 +125,14 @@ struct StepScratch {
     std::vector<BallContact> contacts; // from the collide phase, for the contact phase
     std::vector<int32_t> contactOf;    // per triangle: its entry in contacts, -1 (scratch of the contact phase)
     uint64_t pinSignature = 0; // hash of the particles with invMass 0, from the last integration
+    bool verletRunning = false; // the last integration was Verlet (else its next step starts it)
+    std::vector<Vec3> verletKick; // Verlet: per particle, a dt / 2 of its last step (world.cpp [INTEGRATE])
     SpringCache springs;
     LimitCache limit;
+    // Reference integrators (implicit Euler, XPBD).
+    std::vector<Vec3> externalForce; // N per particle from the wind phase
+    std::vector<Vec3> xpbdDx;         // XPBD: displacements within the sub-step
+    ImplicitCacheHolder implicit;
 };
 
 class World {
@@ -154,6 +175,7 @@ private:
     void phaseSprings(float dt);
     void phaseWind();
     void phaseIntegrate(float dt);
+    void phaseIntegrateReference(float dt); // implicit Euler, XPBD (springs included)
     void phaseLimit(float dt);
     void phaseCollide(float dt);
     void phaseContact(float dt);

@@ -9,7 +9,8 @@
 namespace clothtear {
 namespace {
 
-const char* const kIntegratorNames[] = {"semi-implicit-euler", "forward-euler", "verlet", nullptr};
+const char* const kIntegratorNames[] = {"semi-implicit-euler", "forward-euler", "verlet", "implicit-euler", "xpbd",
+                                          nullptr};
 const char* const kAirNames[] = {"drag", "keserica", nullptr};
 const char* const kMeshNames[] = {"grid", "irregular", "obj", nullptr};
 const char* const kPinNames[] = {"none", "top", "corners", "sides", "left", nullptr};
@@ -26,8 +27,10 @@ const char* const kPinNames[] = {"none", "top", "corners", "sides", "left", null
 const ParamInfo kParams[] = {
     CT_F("time.frame_dt", time.frameDt, 1.0 / 240, 1.0 / 20, 1e-5, 0.1, "s", "Simulated time per frame", false),
     CT_I("time.substeps", time.substeps, 1, 200, 1, 2000, "", "Sub-steps per frame (sub-step dt = frame_dt / substeps)", false),
-    CT_E("time.integrator", time.integrator, kIntegratorNames, "Integration method", false),
+    CT_E("time.integrator", time.integrator, kIntegratorNames, "Integration method (implicit-euler, xpbd: references, stable at any step, no stability guard)", false),
     CT_B("time.stability_guard", time.stabilityGuard, "Cap each spring's stiffness and damping to what explicit integration can take (off: unsafe on purpose)", false),
+    CT_F("time.cg_tolerance", time.cgTolerance, 1e-8, 1e-2, 1e-10, 0.1, "", "Implicit Euler: relative residual at which the conjugate-gradient solve stops", false),
+    CT_I("time.cg_max_iterations", time.cgMaxIterations, 10, 1000, 1, 100000, "", "Implicit Euler: most conjugate-gradient iterations per sub-step", false),
     CT_F("time.verlet_friction", time.verletFriction, 0, 0.2, 0, 1, "", "Verlet: fraction of velocity lost per step (Keserica f)", false),
 
     CT_F("material.density", material.density, 0.01, 5, 1e-4, 100, "kg/m^2", "Areal density, lumped to particles from rest triangle areas", false),

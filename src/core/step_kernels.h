@@ -154,6 +154,8 @@ namespace clothtear {
 // the Jacobi passes (moveParticle in world.cpp): with the move delta = s d (d = x_p - x_a,
 // s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0, is cancelled up to |delta| / dt:
 //   v += delta * min(1 / dt, (v.d) / (-s |d|^2)).
+// Without velocityFix (Verlet, whose velocity is the position change (x - x_prev) / dt) the move
+// is all velocity: v += delta / dt.
 inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const float* length, const uint8_t* cut,
                          float maxRatio, float dt, bool velocityFix, const PackedParticle* packed, Vec3* x, Vec3* v) {
     auto one = [&](size_t p) {
@@ -167,7 +169,10 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
         const float s = L / std::sqrt(len2) - 1.f;
         const Vec3 delta(dx * s, dy * s, dz * s);
         x[p] = Vec3(P.x[0], P.x[1], P.x[2]) + delta;
-        if (!velocityFix) return;
+        if (!velocityFix) {
+            v[p] = Vec3(P.v[0], P.v[1], P.v[2]) + delta * (1.f / dt);
+            return;
+        }
         const float vd = P.v[0] * dx + P.v[1] * dy + P.v[2] * dz;
         if (vd > 0.f) v[p] = Vec3(P.v[0], P.v[1], P.v[2]) + delta * std::min(1.f / dt, vd / (-s * len2));
     };
@@ -214,7 +219,7 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
         const __m128 pos = _mm_cmpgt_ps(len2, zero);
         const __m128 safe = _mm_or_ps(_mm_and_ps(pos, len2), _mm_andnot_ps(pos, ones));
         const __m128 s = _mm_sub_ps(_mm_div_ps(L, _mm_sqrt_ps(safe)), ones);
-        __m128 coef = zero;
+        __m128 coef = invDt; // Verlet: v += delta / dt
         if (velocityFix) {
             _MM_TRANSPOSE4_PS(vt[0], vt[1], vt[2], vt[3]);
             const __m128 vd =
@@ -238,7 +243,7 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
                 vn[j] = _mm_add_ps(vv[j], _mm_mul_ps(delta, cj[j])); // coef 0: the velocity it read
             }
             store4x3(x[p].data(), xn);
-            if (velocityFix) store4x3(v[p].data(), vn);
+            store4x3(v[p].data(), vn);
             continue;
         }
         for (int j = 0; j < 4; ++j) {
@@ -246,7 +251,7 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
             const __m128 delta = _mm_mul_ps(d[j], sj[j]);
             store3(x[p + j], _mm_add_ps(xp[j], delta));
             // With coef 0 this writes back the velocity it read (packed v is v after integration).
-            if (velocityFix) store3(v[p + j], _mm_add_ps(vv[j], _mm_mul_ps(delta, cj[j])));
+            store3(v[p + j], _mm_add_ps(vv[j], _mm_mul_ps(delta, cj[j])));
         }
     }
 #endif

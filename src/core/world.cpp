@@ -4,16 +4,19 @@
 //   [SETUP]      rebuild, pinning, settings
 //   [STEP]       step / substep and the phase driver
 //   [FORCES]     force buffers, spring cache, spring forces (kernels: step_kernels.h), wind
-//   [INTEGRATE]  gravity, air friction; semi-implicit Euler, forward Euler, Verlet
+//   [INTEGRATE]  gravity, air friction; semi-implicit Euler, forward Euler, Verlet; the references
+//                (implicit Euler, XPBD: implicit_euler.h, xpbd.h) with their springs
 //   [LIMIT]      strain scan, tethers (tethers.h), Provot length limiting (averaged Jacobi)
 //   [MISC]       impulse, energy, bookkeeping
 #include "clothtear/world.h"
 
 #include "clothtear/tear.h"
 #include "collide.h"
+#include "implicit_euler.h"
 #include "parallel.h"
 #include "step_kernels.h"
 #include "tethers.h"
+#include "xpbd.h"
 
 #include <algorithm>
 #include <chrono>
@@ -154,11 +157,13 @@ void World::step() {
 
 void World::substep() {
     const float dt = settings.time.frameDt / float(settings.time.substeps);
+    // The reference integrators treat the springs inside their own step.
+    const bool reference = !isExplicit(settings.time.integrator);
     {
         PhaseTimer t(profile, Phase::Forces);
         phaseForces(dt);
     }
-    {
+    if (!reference) {
         PhaseTimer t(profile, Phase::Springs);
         phaseSprings(dt);
     }
@@ -168,7 +173,8 @@ void World::substep() {
     }
     {
         PhaseTimer t(profile, Phase::Integrate);
-        phaseIntegrate(dt);
+        if (reference) phaseIntegrateReference(dt);
+        else phaseIntegrate(dt);
     }
     if (!balls.empty()) {
         PhaseTimer t(profile, Phase::Collide);
@@ -375,6 +381,8 @@ struct IntegrateParams {
     float dragPerMass; // 1/s
     float keep;        // Keserica: velocity kept per step
     float verletKeep;  // Verlet: 1 - friction
+    bool verletStart;  // Verlet: first step since a rebuild or a change of integrator
+    Vec3* verletKick;  // Verlet: per particle, half the last step's velocity change (a dt / 2)
     float dt;
 };
 
@@ -409,11 +417,22 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, con
             xn += vn * P.dt;
             vn = (vn + a * P.dt) * P.keep;
         } else {
-            const V4 prev(xPrev[p].x(), xPrev[p].y(), xPrev[p].z(), 0.f);
-            const V4 next = xn + P.verletKeep * P.keep * (xn - prev) + a * (P.dt * P.dt);
+            // Velocity form, second order. The state is u = (x_n - x_{n-1}) / dt as computed (not
+            // recomputed from rounded positions) plus the half kick a_{n-1} dt / 2, so that v = u +
+            // kick is the velocity at t_n to second order (the springs' damping and the air read
+            // it; with u alone they made the method first order). Position form in float quantizes
+            // u to ulp(x) / dt each step and drops a dt^2 below half an ulp: at dt = 1/3840 s its
+            // error grew as dt^-2 (bench/README.md). Every phase that moves x moves v with it
+            // (limit, tethers: v += delta / dt; collisions and impulses already did). The first
+            // step (P.verletStart) takes kick = a dt / 2: the Taylor step x + v dt + a dt^2 / 2.
+            const Vec3& k = P.verletKick[p];
+            const V4 kickPrev = P.verletStart ? V4(a * (0.5f * P.dt)) : V4(k.x(), k.y(), k.z(), 0.f);
+            const V4 step = (P.verletKeep * P.keep * P.dt) * (vn - kickPrev) + a * (P.dt * P.dt);
+            const V4 kick = a * (0.5f * P.dt);
+            P.verletKick[p] = kick.head<3>();
             xPrev[p] = xn.head<3>();
-            vn = (next - xn) / P.dt;
-            xn = next;
+            vn = step * (1.f / P.dt) + kick;
+            xn += step;
         }
         px = xn;
         pv = vn;
@@ -455,7 +474,8 @@ uint64_t integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Ve
 // a = external acceleration (gravity, air drag) + (sum of spring and wind forces) / m.
 //   semi-implicit Euler (Onal 2.1):  v += a dt;  x += v dt
 //   forward Euler:                   x += v dt;  v += a dt
-//   Verlet (Keserica 2.2.1):         x' = x + (1 - f)(x - x_prev) + a dt^2;  v = (x' - x) / dt
+//   Verlet (Keserica 2.2.1):         x' = x + (1 - f)(x - x_prev) + a dt^2;  v = (x' - x) / dt + a dt / 2
+//                                    (first step: x' = x + v dt + a dt^2 / 2; see integrateRange)
 // Pinned particles (invMass 0) do not move here; drivers move theirs kinematically.
 void World::phaseIntegrate(float dt) {
     const size_t n = cloth.particleCount();
@@ -465,6 +485,10 @@ void World::phaseIntegrate(float dt) {
     P.dragPerMass = settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f;
     P.keep = settings.air.model == AirModel::Keserica ? 1.f - settings.air.kesericaFactor : 1.f;
     P.verletKeep = 1.f - settings.time.verletFriction;
+    P.verletStart = settings.time.integrator == Integrator::Verlet && !scratch_.verletRunning;
+    scratch_.verletRunning = settings.time.integrator == Integrator::Verlet;
+    if (scratch_.verletRunning) scratch_.verletKick.resize(n, Vec3::Zero()); // torn-off copies start at 0
+    P.verletKick = scratch_.verletKick.data();
     P.dt = dt;
     Vec3* x = cloth.x.data();
     Vec3* v = cloth.v.data();
@@ -487,12 +511,59 @@ void World::phaseIntegrate(float dt) {
         case Integrator::Verlet:
             h = integrateKernel<Integrator::Verlet>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
             break;
+        default: break; // the references go through phaseIntegrateReference
         }
         pinned[t % kMaxThreadSlots] += h;
     });
     uint64_t signature = n;
     for (uint64_t h : pinned) signature += h;
     scratch_.pinSignature = signature;
+    moveDrivers(dt);
+}
+
+// The reference integrators (implicit_euler.h, xpbd.h): springs with their full stiffness (no
+// stability guard), gravity, air and the wind phase's forces, summed out of (and cleared from) the
+// per-thread buffers. Afterwards the packed copy and the pin signature are left as the explicit
+// integrator leaves them, for the limit phase and the caches.
+void World::phaseIntegrateReference(float dt) {
+    refreshSpringCache(dt); // the strain scan reads its ends and rest lengths
+    const size_t n = cloth.particleCount();
+    std::vector<Vec3>& ext = scratch_.externalForce;
+    ext.clear();
+    for (size_t t = 0; t < scratch_.threadAcc.size(); ++t) {
+        const auto [lo, hi] = scratch_.threadRange[t];
+        if (lo >= hi) continue;
+        if (ext.empty()) ext.assign(n, Vec3::Zero());
+        for (size_t p = lo; p < hi; ++p) {
+            ext[p] += scratch_.threadAcc[t][p].head<3>();
+            scratch_.threadAcc[t][p].setZero();
+        }
+    }
+    const MaterialSettings& m = settings.material;
+    ReferenceStepInput in{dt,
+                          Vec3(settings.gravity.x, settings.gravity.y, settings.gravity.z),
+                          settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f,
+                          settings.air.model == AirModel::Keserica ? 1.f - settings.air.kesericaFactor : 1.f,
+                          {SpringKind{cloth.springs, m.stretchStiffness, m.stretchDamping},
+                           SpringKind{cloth.bends, m.bendStiffness, m.bendDamping}},
+                          ext};
+    if (settings.time.integrator == Integrator::ImplicitEuler) {
+        auto& holder = scratch_.implicit;
+        if (!holder.cache) holder.cache = std::make_unique<ImplicitEulerCache>();
+        const ImplicitEulerOptions options{settings.time.cgTolerance, settings.time.cgMaxIterations};
+        implicitEulerStep(cloth, in, options, *holder.cache);
+        profile.solverIterations += uint64_t(holder.cache->lastIterations);
+    } else {
+        xpbdStep(cloth, in, scratch_.xpbdDx);
+    }
+    uint64_t signature = n;
+    for (Index p = 0; p < n; ++p) {
+        if (cloth.invMass[p] == 0.f) signature += hashIndex(p);
+        scratch_.packed[p] = PackedParticle{{cloth.x[p].x(), cloth.x[p].y(), cloth.x[p].z(), 0.f},
+                                            {cloth.v[p].x(), cloth.v[p].y(), cloth.v[p].z(), 0.f}};
+    }
+    scratch_.pinSignature = signature;
+    scratch_.verletRunning = false;
     moveDrivers(dt);
 }
 
@@ -523,7 +594,7 @@ struct LimitParams {
     float relaxation;
     float dt;
     bool limiting;       // limit.enabled with iterations > 0 (else: strain scan only)
-    bool velocityFix;    // not for Verlet, which derives v from x
+    bool velocityFix;    // inelastic fix; off for Verlet, whose v is (x - x_prev) / dt: a move is a velocity
 };
 
 // Corrections of one thread: xyz sum and the number of springs in w.
@@ -564,7 +635,11 @@ inline void addCorrection(const Spring& s, const Vec3& d, float len2, float maxL
     const Vec3 c = n * (excess / (wa + wb));
     corr[s.a].head<3>() += wa * c;
     corr[s.b].head<3>() -= wb * c;
-    if (!P.velocityFix) return;
+    if (!P.velocityFix) { // Verlet: v is the position change over dt, so the move is a velocity change
+        corrV[s.a].head<3>() += (wa / P.dt) * c;
+        corrV[s.b].head<3>() -= (wb / P.dt) * c;
+        return;
+    }
     const float separating = (v[s.b] - v[s.a]).dot(n);
     if (!(separating > 0.f)) return;
     const Vec3 dv = n * (std::min(separating, excess / P.dt) / (wa + wb));

@@ -49,6 +49,15 @@ void dropPopulate(World& w) {
     w.balls.push_back(b);
 }
 
+// Swing: pinned at its two top corners, released from horizontal; smooth motion (no tearing, no
+// ground) for the accuracy measurements of clothbench (bench/README.md).
+void swingConfig(Settings& s) {
+    s.cloth.pin = PinMode::TopCorners;
+    s.cloth.tilt = 90.f;
+    s.tear.enabled = false;
+    s.collision.ground = false;
+}
+
 void irregularConfig(Settings& s) { s.cloth.mesh = MeshType::Irregular; }
 
 // ---- tearing scenes (Onal chapter 4) ----------------------------------------------------------------
@@ -156,6 +165,8 @@ const SceneDef kScenes[] = {
 
     {"curtain", "Cloth hanging from its top edge", curtainConfig, noPopulate},
     {"corners", "Cloth hanging from its two top corners", cornersConfig, noPopulate},
+    {"swing", "Cloth pinned at its two top corners, released from horizontal (no tearing, no ground)", swingConfig,
+     noPopulate},
     {"flag", "Flag pinned along its left edge, gusty wind", flagConfig, noPopulate},
     {"drop", "Free horizontal cloth falls onto a ball resting on the ground", dropConfig, dropPopulate},
     {"irregular", "Curtain on a non-uniform (jittered) triangle mesh", irregularConfig, noPopulate},

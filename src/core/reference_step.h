@@ -1,0 +1,31 @@
+// What the two reference integrators (implicit_euler.h, xpbd.h) read for one sub-step. world.cpp
+// fills it; the integrators then move every free particle and leave pinned ones alone.
+//
+// Unlike the explicit integrators these see each spring's full stiffness: the stability guard
+// (world.cpp [FORCES]) exists only because explicit integration of a stiff spring explodes, and
+// both references are stable at any step.
+#pragma once
+#include "clothtear/cloth.h"
+
+#include <span>
+
+namespace clothtear {
+
+// One kind of spring with its material constants per unit weight: k = stiffness * weight (N/m),
+// kd = damping * weight (N s/m), as in the explicit spring phase.
+struct SpringKind {
+    std::span<const Spring> springs;
+    float stiffness; // N/m
+    float damping;   // N s/m
+};
+
+struct ReferenceStepInput {
+    float dt;                    // s
+    Vec3 gravity;                // m/s^2
+    float dragPerMass;           // 1/s: air drag a = -dragPerMass v (physical model)
+    float keep;                  // Keserica air model: fraction of velocity kept per sub-step (1 otherwise)
+    SpringKind kinds[2];         // structural, bend-shear
+    std::span<const Vec3> force; // N per particle from other phases (wind); empty: none
+};
+
+} // namespace clothtear
