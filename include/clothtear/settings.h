@@ -20,7 +20,10 @@ struct TimeSettings {
     int32_t substeps = 10;        // count, [1, 500]  sub-steps per frame (sub-step dt = frameDt / substeps)
     Integrator integrator = Integrator::SemiImplicitEuler;
     float verletFriction = 0.01f; // fraction of velocity lost per Verlet step (Keserica 2.2.1 "f"), [0, 1]
-    bool stabilityGuard = true;   // cap each spring's stiffness/damping to its explicit stability limit
+    bool stabilityGuard = true;   // raise sub-steps up to maxSubsteps for the stable step, then cap each spring
+    int32_t maxSubsteps = 10;     // count, [1, 2000]  most sub-steps per frame the guard may use (default:
+                                  // time.substeps, so it only caps springs and keeps the frame budget; see
+                                  // bench/README.md "Stability" for what raising it costs and buys)
     float cgTolerance = 1e-5f;    // relative residual, [1e-10, 0.1]  implicit Euler: conjugate-gradient stop
     int32_t cgMaxIterations = 200; // count, [1, 100000]  implicit Euler: conjugate-gradient iteration cap
 };

@@ -135,6 +135,12 @@ struct StepScratch {
     ImplicitCacheHolder implicit;
 };
 
+// The stability guard's estimate of the largest stable sub-step of explicit integration for the
+// material as set (before any spring is capped), s: Gershgorin's bound over each particle's
+// springs, so the stiffest springs on the lightest particle decide it (src/core/stability.cpp).
+// Infinite for the reference integrators.
+double stableStepEstimate(const Cloth& cloth, const Settings& settings);
+
 class World {
 public:
     Settings settings;
@@ -146,6 +152,7 @@ public:
     double time = 0;        // s, simulated
     uint64_t steps = 0;     // frames
     float maxStrain = 0;    // over structural springs, after the last sub-step
+    int frameSubsteps = 0;  // sub-steps of the last frame (time.substeps, or more: see guardSubsteps)
     bool finite = true;     // false once any NaN/Inf appeared in the state
     std::string nonFiniteWhere; // phase and particle of the first non-finite value
 
@@ -159,7 +166,11 @@ public:
 
     void pinByMode(PinMode mode);
     void step();    // one frame
-    void substep(); // one sub-step (exposed for tests and benchmarks)
+    void substep(); // one sub-step of frameDt / time.substeps (exposed for tests and benchmarks)
+
+    // Sub-steps the next frame takes: time.substeps, raised by the stability guard (when on, with
+    // an explicit integrator) towards frameDt / stableStepEstimate(), at most time.max_substeps.
+    int guardSubsteps();
 
     // One-shot velocity change dv (m/s) along `direction` on the particles within `radius` of `center`.
     int applyImpulse(const Vec3& center, float radius, const Vec3& direction, float dv);
@@ -171,9 +182,12 @@ public:
 
 private:
     StepScratch scratch_;
+    int substepsNow_ = 0; // sub-steps of the frame being stepped (0 outside step(): time.substeps)
+    uint64_t guardKey_ = ~uint64_t(0);
+    double guardStep_ = 0; // s, cached stableStepEstimate()
     void phaseForces(float dt);
     void phaseSprings(float dt);
-    void phaseWind();
+    void phaseWind(float dt);
     void phaseIntegrate(float dt);
     void phaseIntegrateReference(float dt); // implicit Euler, XPBD (springs included)
     void phaseLimit(float dt);
@@ -184,6 +198,8 @@ private:
     void moveDrivers(float dt);
     void refreshLimitCache();
     void refreshSpringCache(float dt);
+    void guardParticleBudget(float dt, float dragPerMass);
+    float guardDragPerMass(float dt) const;
 };
 
 } // namespace clothtear

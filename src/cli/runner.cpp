@@ -91,6 +91,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"seconds", w.time},
         {"steps", w.steps},
         {"substeps", w.settings.time.substeps},
+        {"frame_substeps", w.frameSubsteps}, // after the stability guard (time.max_substeps)
         {"dt", double(w.settings.time.frameDt) / w.settings.time.substeps},
         {"integrator", formatParamValue(w.settings, *findParam("time.integrator"))},
         {"particles", c.particleCount()},

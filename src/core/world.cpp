@@ -150,13 +150,39 @@ void World::pinByMode(PinMode mode) {
 
 void World::step() {
     applySettings();
-    for (int i = 0; i < settings.time.substeps; ++i) substep();
+    frameSubsteps = guardSubsteps();
+    substepsNow_ = frameSubsteps;
+    for (int i = 0; i < frameSubsteps; ++i) substep();
+    substepsNow_ = 0;
     phaseBookkeeping();
     ++steps;
 }
 
+// The stability guard, first part: with an explicit integrator, take enough sub-steps that the
+// material as set is stable (stability.cpp), up to time.max_substeps. Whatever is still too stiff
+// at that step is capped spring by spring in the spring cache (phaseSprings), so the guard never
+// lets a frame explode, and where the budget allows, the cloth keeps its stiffness.
+int World::guardSubsteps() {
+    const TimeSettings& T = settings.time;
+    if (!T.stabilityGuard || !isExplicit(T.integrator) || T.maxSubsteps <= T.substeps) return T.substeps;
+    const MaterialSettings& m = settings.material;
+    uint64_t key = hashIndex(cloth.topologyRevision) ^ hashIndex(scratch_.pinSignature + 3);
+    for (uint64_t word : {uint64_t(cloth.particleCount()), uint64_t(cloth.springs.size()), uint64_t(cloth.bends.size()),
+                          uint64_t(bitsOf(m.stretchStiffness)), uint64_t(bitsOf(m.stretchDamping)),
+                          uint64_t(bitsOf(m.bendStiffness)), uint64_t(bitsOf(m.bendDamping)),
+                          uint64_t(bitsOf(cloth.density)), uint64_t(T.integrator)})
+        key = hashIndex(key ^ word);
+    if (key != guardKey_) {
+        guardStep_ = stableStepEstimate(cloth, settings);
+        guardKey_ = key;
+    }
+    const double need = std::ceil(double(T.frameDt) / guardStep_);
+    return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need));
+}
+
 void World::substep() {
-    const float dt = settings.time.frameDt / float(settings.time.substeps);
+    const int substeps = substepsNow_ > 0 ? substepsNow_ : settings.time.substeps;
+    const float dt = settings.time.frameDt / float(substeps);
     // The reference integrators treat the springs inside their own step.
     const bool reference = !isExplicit(settings.time.integrator);
     {
@@ -169,7 +195,7 @@ void World::substep() {
     }
     if (settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f) {
         PhaseTimer t(profile, Phase::Wind);
-        phaseWind();
+        phaseWind(dt);
     }
     {
         PhaseTimer t(profile, Phase::Integrate);
@@ -233,7 +259,8 @@ void World::refreshSpringCache(float dt) {
                           uint64_t(uintptr_t(cloth.bends.data())), uint64_t(cloth.bends.size()),
                           uint64_t(bitsOf(m.stretchStiffness)), uint64_t(bitsOf(m.stretchDamping)),
                           uint64_t(bitsOf(m.bendStiffness)), uint64_t(bitsOf(m.bendDamping)), uint64_t(bitsOf(dt)),
-                          uint64_t(bitsOf(cloth.density)), uint64_t(guard) + 2 * uint64_t(bends)})
+                          uint64_t(bitsOf(cloth.density)), uint64_t(guard) + 2 * uint64_t(bends),
+                          uint64_t(bitsOf(guardDragPerMass(dt)))})
         key = hashIndex(key ^ word);
     if (key == S.key) return;
     const size_t ns = cloth.springs.size(), nb = bends ? cloth.bends.size() : 0;
@@ -265,8 +292,50 @@ void World::refreshSpringCache(float dt) {
     };
     fill(cloth.springs, ns, 0, m.stretchStiffness, m.stretchDamping);
     fill(cloth.bends, nb, ns, m.bendStiffness, m.bendDamping);
+    if (guard) guardParticleBudget(dt, guardDragPerMass(dt));
     S.threadRange.clear(); // recomputed for the thread count in use
     S.key = key;
+}
+
+// Air drag as the integrator applies it: with the guard on, capped at 0.5 / dt (explicit drag
+// v -= c/rho v dt overshoots past zero velocity beyond 1 / dt and explodes beyond 2 / dt; a light
+// cloth in the safe ranges reaches c/rho = 500 1/s).
+float World::guardDragPerMass(float dt) const {
+    const float c = settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f;
+    return settings.time.stabilityGuard ? std::min(c, 0.5f / dt) : c;
+}
+
+// Stability guard, per particle. The caps of refreshSpringCache bound each spring alone; a particle
+// with many capped springs (a sliver mesh, a fan of torn triangles, strong damping) can still add
+// up past the stable region. Gershgorin (stability.cpp): semi-implicit Euler is stable while, for
+// every particle p,
+//   dt^2 w_p sum(k) / 2 + dt w_p sum(kd) + dt c_air < 1.
+// Where a particle's springs add up past kParticleBudget, they are scaled down by the factor that
+// brings it back (a spring takes the smaller factor of its two ends, so both ends end within the
+// budget). At the defaults the per-spring caps already keep every particle inside, so this changes
+// nothing there; it is what keeps random safe parameter sets finite (tests/test_stability.cpp).
+void World::guardParticleBudget(float dt, float dragPerMass) {
+    constexpr float kParticleBudget = 0.9f;
+    SpringCache& S = scratch_.springs;
+    const size_t n = cloth.particleCount(), count = S.a16.size();
+    std::vector<float> load(n, 0.f);
+    for (size_t e = 0; e < count; ++e) {
+        const float term = 0.5f * dt * dt * S.k[e] + dt * S.kd[e];
+        load[S.a16[e] / 16] += cloth.invMass[S.a16[e] / 16] * term;
+        load[S.b16[e] / 16] += cloth.invMass[S.b16[e] / 16] * term;
+    }
+    const float room = std::max(0.f, kParticleBudget - dt * dragPerMass);
+    bool any = false;
+    for (size_t p = 0; p < n; ++p) {
+        load[p] = load[p] > room ? room / load[p] : 1.f; // now the factor
+        any |= load[p] < 1.f;
+    }
+    if (!any) return;
+    for (size_t e = 0; e < count; ++e) {
+        const float f = std::min(load[S.a16[e] / 16], load[S.b16[e] / 16]);
+        S.k[e] *= f;
+        S.kd[e] *= f;
+    }
 }
 
 // Structural and bend-shear springs, scattered into per-thread buffers, summed in the integrator.
@@ -328,7 +397,12 @@ void World::phaseSprings(float dt) {
 
 // Wind on each triangle from its normal and the relative air velocity (so a flag flutters):
 //   F = c A (n . v_rel) |n . v_rel| n,   v_rel = wind - mean triangle velocity, shared by the corners.
-void World::phaseWind() {
+//
+// With the stability guard on, the force on a triangle is capped so that it cannot change its
+// lightest corner's normal velocity by more than the relative normal speed in one sub-step (drag
+// can bring the cloth to the air's speed, not past it): explicit quadratic drag on a light cloth
+// in a strong wind (rho = 0.01 kg/m^2, 30 m/s, both in the safe ranges) overshoots and explodes.
+void World::phaseWind(float dt) {
     const WindSettings& w = settings.wind;
     Vec3 dir(w.dirX, w.dirY, w.dirZ);
     if (dir.squaredNorm() < 1e-12f) return;
@@ -339,6 +413,8 @@ void World::phaseWind() {
     const Vec3 wind = dir * (w.speed * std::max(0.f, gustFactor));
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
+    const float* invMass = cloth.invMass.data();
+    const bool guard = settings.time.stabilityGuard;
     const int threads = int(scratch_.threadAcc.size());
     for (auto& r : scratch_.threadRange) r = {0, cloth.particleCount()}; // wind may touch any particle
     parallelRegion(cloth.triangles.size(), threads, [&](int t, int nt) {
@@ -352,7 +428,13 @@ void World::phaseWind() {
             const Vec3 nrm = cross / twiceArea;
             const Vec3 vrel = wind - (v[tri.p[0]] + v[tri.p[1]] + v[tri.p[2]]) * (1.f / 3.f);
             const float vn = nrm.dot(vrel);
-            const Vec3 f = (w.dragCoefficient * 0.5f * twiceArea * vn * std::abs(vn) / 3.f) * nrm;
+            float mag = w.dragCoefficient * 0.5f * twiceArea * vn * std::abs(vn) / 3.f;
+            if (guard) {
+                const float wMax = std::max({invMass[tri.p[0]], invMass[tri.p[1]], invMass[tri.p[2]]});
+                const float cap = std::abs(vn) / (dt * std::max(wMax, 1e-30f));
+                mag = std::clamp(mag, -cap, cap);
+            }
+            const Vec3 f = mag * nrm;
             for (Index p : tri.p) acc[p].head<3>() += f;
         }
     });
@@ -482,7 +564,7 @@ void World::phaseIntegrate(float dt) {
     const int threads = int(scratch_.threadAcc.size());
     IntegrateParams P;
     P.g = Vec3(settings.gravity.x, settings.gravity.y, settings.gravity.z);
-    P.dragPerMass = settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f;
+    P.dragPerMass = guardDragPerMass(dt);
     P.keep = settings.air.model == AirModel::Keserica ? 1.f - settings.air.kesericaFactor : 1.f;
     P.verletKeep = 1.f - settings.time.verletFriction;
     P.verletStart = settings.time.integrator == Integrator::Verlet && !scratch_.verletRunning;
@@ -540,9 +622,14 @@ void World::phaseIntegrateReference(float dt) {
         }
     }
     const MaterialSettings& m = settings.material;
+    // Implicit Euler treats air drag implicitly (stable at any value); XPBD applies it explicitly,
+    // capped by the guard like the explicit integrators.
+    const float drag = settings.time.integrator == Integrator::Xpbd ? guardDragPerMass(dt)
+                       : settings.air.model == AirModel::Drag      ? settings.air.dragCoefficient / cloth.density
+                                                                   : 0.f;
     ReferenceStepInput in{dt,
                           Vec3(settings.gravity.x, settings.gravity.y, settings.gravity.z),
-                          settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / cloth.density : 0.f,
+                          drag,
                           settings.air.model == AirModel::Keserica ? 1.f - settings.air.kesericaFactor : 1.f,
                           {SpringKind{cloth.springs, m.stretchStiffness, m.stretchDamping},
                            SpringKind{cloth.bends, m.bendStiffness, m.bendDamping}},

@@ -1,0 +1,54 @@
+// Shared by the clothbench modes: options, loading scenes, timing, the thread count.
+#pragma once
+#include "clothtear/scenes.h"
+#include "clothtear/world.h"
+
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace clothtear::bench {
+
+struct BenchOptions {
+    std::string out = "bench-out"; // folder for CSV and SVG files
+    bool quick = false;            // fewer points and shorter runs (a smoke run, minutes instead of tens)
+    uint64_t seed = 1;             // stress mode: the random script
+    double stressMinutes = 3;      // stress mode: wall-clock length of the randomized run
+    int stressResolution = 128;    // stress mode: particles per side
+    int threads = 1;               // OpenMP threads for the timed runs of every mode but `peers`
+    std::string commandLine;       // how this run was started, written into every plot
+};
+
+// Loads a scene with overrides; a bad name or override is a bug in clothbench itself, so it throws
+// (main prints it and exits non-zero).
+inline World loadOrThrow(const std::string& scene, const std::vector<std::string>& overrides) {
+    World w;
+    if (std::string err = loadScene(w, scene, overrides); !err.empty())
+        throw std::runtime_error("scene '" + scene + "': " + err);
+    return w;
+}
+
+inline double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Sets the OpenMP thread count (no-op without OpenMP).
+void setThreads(int threads);
+
+// The machine, in one line (CPU model, logical CPUs, load average) for the notes of every output.
+std::string machineDescription();
+
+// Resident set size of this process in bytes (from /proc/self/statm), 0 where unavailable.
+size_t residentBytes();
+
+// Each mode: writes its CSV/SVG files into options.out and prints a summary. Returns an exit status.
+int runAccuracy(const BenchOptions& options);
+int runStability(const BenchOptions& options);
+int runStatic(const BenchOptions& options);
+int runSkipping(const BenchOptions& options);
+int runStress(const BenchOptions& options);
+int runPeers(const BenchOptions& options);
+
+} // namespace clothtear::bench

@@ -1,0 +1,209 @@
+// Stability: the guard's estimate of the stable step against a measured blow-up, the guard's
+// sub-step choice, and randomized parameter sets from the panel's safe ranges that must never
+// produce a non-finite value with balls, wind, drags and tearing.
+//
+// Section index:
+//   [ESTIMATE]   stableStepEstimate: stable below it, the estimate within a factor of the truth
+//   [GUARD]      sub-steps chosen by the guard
+//   [RANDOM]     randomized safe parameter sets, 5 s each
+#include "clothtear/params.h"
+#include "clothtear/random.h"
+#include "clothtear/scenes.h"
+#include "clothtear/tear.h"
+#include "clothtear/world.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace clothtear;
+
+namespace {
+
+// ========================================================================================= [ESTIMATE]
+
+// Runs the swing (a large motion that excites every mode) for 1 s at sub-step dt with the guard
+// and the limit off; true if it stays finite with strain below 10.
+bool stableAt(double dt, float stiffness) {
+    World w;
+    EXPECT_EQ(loadScene(w, "swing",
+                        std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12", "limit.enabled=false",
+                                                 "time.stability_guard=false", "time.substeps=1",
+                                                 "time.frame_dt=" + std::to_string(dt),
+                                                 "material.stretch_stiffness=" + std::to_string(stiffness)}),
+              "");
+    const int frames = int(std::ceil(1.0 / dt));
+    for (int f = 0; f < frames && w.finite; ++f) {
+        w.step();
+        if (w.maxStrain > 10.f) return false;
+    }
+    return w.finite;
+}
+
+// Semi-implicit Euler is stable at the estimate (Gershgorin is a bound, so the estimate is on the
+// safe side) and unstable at 4x the estimate (so it is not uselessly small): the real limit lies
+// in between. For a grid, the measured limit is about 1.9x the estimate (bench/README.md).
+TEST(Stability, EstimateIsSafeAndWithinAFactorOfFourOfTheBlowUp) {
+    for (float stiffness : {60.f, 2000.f}) {
+        World w;
+        ASSERT_EQ(loadScene(w, "swing",
+                            std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12",
+                                                     "material.stretch_stiffness=" + std::to_string(stiffness)}),
+                  "");
+        const double estimate = stableStepEstimate(w.cloth, w.settings);
+        ASSERT_TRUE(std::isfinite(estimate));
+        EXPECT_TRUE(stableAt(estimate, stiffness)) << "S=" << stiffness << " estimate " << estimate << " s";
+        EXPECT_FALSE(stableAt(4 * estimate, stiffness)) << "S=" << stiffness << " estimate " << estimate << " s";
+    }
+}
+
+// ============================================================================================ [GUARD]
+
+// The guard raises sub-steps to frameDt / estimate when time.max_substeps allows, never lowers
+// them, and leaves the reference integrators alone.
+TEST(Stability, GuardPicksTheSubstepsTheEstimateNeeds) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain",
+                        std::vector<std::string>{"cloth.resolution_x=64", "cloth.resolution_y=64", "time.max_substeps=200"}),
+              "");
+    const double estimate = stableStepEstimate(w.cloth, w.settings);
+    const int need = int(std::ceil(double(w.settings.time.frameDt) / estimate));
+    ASSERT_GT(need, w.settings.time.substeps) << "64x64 at the default material needs more than 10";
+    EXPECT_EQ(w.guardSubsteps(), need);
+    w.step();
+    EXPECT_EQ(w.frameSubsteps, need);
+    EXPECT_EQ(w.profile.substeps, uint64_t(need));
+    w.settings.time.maxSubsteps = 12;
+    EXPECT_EQ(w.guardSubsteps(), 12) << "capped at time.max_substeps (springs are capped beyond)";
+    w.settings.time.maxSubsteps = 5;
+    EXPECT_EQ(w.guardSubsteps(), 10) << "never fewer than time.substeps";
+    w.settings.time.maxSubsteps = 200;
+    w.settings.time.stabilityGuard = false;
+    EXPECT_EQ(w.guardSubsteps(), 10);
+    w.settings.time.stabilityGuard = true;
+    w.settings.time.integrator = Integrator::ImplicitEuler;
+    EXPECT_EQ(w.guardSubsteps(), 10);
+}
+
+// =========================================================================================== [RANDOM]
+
+// Every parameter drawn uniformly from its safe range (the panel's default slider span), bools and
+// enums at random, except:
+//  - cloth.resolution_x/y in [4, 20] and time.substeps below a budget of sub-steps per run (20000
+//    explicit, 6000 XPBD, 1500 implicit Euler): small cloths keep the whole test near a minute;
+//  - time.stability_guard on (the claim under test: the guard keeps the safe ranges stable);
+//  - cloth.mesh grid or irregular (obj needs a file); validateCloth after each run;
+//  - the geometry of the scene (pull/tension/ball parameters) is unused: interactions come from the
+//    script below.
+// Script: two balls thrown at the cloth (radius, speed and mass from their safe ranges), a drag
+// (a pinned, driven particle) for one second then released, wind on for the whole run.
+Settings randomSafeSettings(Rng& rng) {
+    Settings s;
+    for (const ParamInfo& p : allParams()) {
+        double v = 0;
+        switch (p.type) {
+        case ParamType::Float: v = rng.uniform(p.safeMin, p.safeMax); break;
+        case ParamType::Int: v = std::floor(rng.uniform(p.safeMin, p.safeMax + 1)); break;
+        case ParamType::Bool: v = rng.uniform() < 0.5; break;
+        case ParamType::Enum: {
+            int n = 0;
+            while (p.enumNames[n])
+                ++n;
+            v = rng.below(uint32_t(n));
+            break;
+        }
+        }
+        setParamUnchecked(s, p, v);
+    }
+    s.cloth.resolutionX = 4 + int(rng.below(17));
+    s.cloth.resolutionY = 4 + int(rng.below(17));
+    s.cloth.mesh = rng.uniform() < 0.5 ? MeshType::Grid : MeshType::Irregular;
+    s.time.stabilityGuard = true;
+    s.tear.validate = false; // validateCloth runs at the end of each run (every tear: minutes in a cascade)
+    s.tear.enabled = true;
+    s.wind.enabled = true;
+    return s;
+}
+
+// Every parameter as key=value (for a failure message that can be replayed with --set).
+std::string allAssignments(const Settings& s) {
+    std::string o;
+    for (const ParamInfo& p : allParams())
+        o += std::string(" --set ") + p.name + "=" + formatParamValue(s, p);
+    return o;
+}
+
+TEST(Stability, RandomSafeParameterSetsStayFinite) {
+    Rng rng(20240605);
+    const int sets = 16;
+    int tore = 0, cascades = 0;
+    for (int run = 0; run < sets; ++run) {
+        World w;
+        w.settings = randomSafeSettings(rng);
+        const Integrator integ = w.settings.time.integrator;
+        const double budget = integ == Integrator::ImplicitEuler ? 1500 : integ == Integrator::Xpbd ? 6000 : 20000;
+        const int frames = int(std::ceil(5.0 / w.settings.time.frameDt));
+        w.settings.time.substeps = std::clamp(w.settings.time.substeps, 1, std::max(1, int(budget / frames)));
+        w.settings.time.maxSubsteps = std::max(w.settings.time.maxSubsteps, 1);
+        ASSERT_EQ(w.rebuild(), "") << "run " << run;
+        const Settings& s = w.settings;
+        std::string what = "run " + std::to_string(run) + ": " + formatParamValue(s, *findParam("time.integrator")) +
+                           " " + std::to_string(s.cloth.resolutionX) + "x" + std::to_string(s.cloth.resolutionY) +
+                           " frame_dt " + std::to_string(s.time.frameDt) + " substeps " + std::to_string(s.time.substeps) +
+                           " S " + std::to_string(s.material.stretchStiffness) + " rho " +
+                           std::to_string(s.material.density) + " pin " + formatParamValue(s, *findParam("cloth.pin"));
+        // Centre of the cloth, to aim at.
+        Vec3 centre = Vec3::Zero();
+        for (const Vec3& x : w.cloth.x)
+            centre += x;
+        centre /= float(w.cloth.particleCount());
+        const Index grabbed = Index(rng.below(uint32_t(w.cloth.particleCount())));
+        const size_t initialParticles = w.cloth.particleCount();
+        const Vec3 dragVelocity =
+            s.scene.pullSpeed * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+        for (int f = 0; f < frames; ++f) {
+            const double t = w.time;
+            if (f == frames / 5 || f == frames / 2) { // throw a ball from 1.5 m in front of the cloth
+                Ball b;
+                b.radius = s.scene.ballRadius;
+                b.mass = s.scene.ballMass;
+                b.x = centre + Vec3(0.f, 0.f, 1.5f + b.radius);
+                b.v = Vec3(0.f, 0.f, -s.scene.ballSpeed);
+                w.balls.push_back(b);
+            }
+            if (f == frames / 10) { // grab
+                w.cloth.setPinned(grabbed, true);
+                w.drivers.push_back(Driver{{grabbed}, dragVelocity});
+            }
+            if (t >= 1.0 + 5.0 / 10 && !w.drivers.empty()) { // release after a second
+                for (Index p : w.drivers.front().particles)
+                    w.cloth.setPinned(p, false);
+                w.drivers.clear();
+            }
+            w.step();
+            if (w.cloth.particleCount() > 20 * initialParticles) { // a tear cascade: finite so far, stop here
+                ++cascades;
+                RecordProperty("cascade_run" + std::to_string(run), what);
+                break;
+            }
+            ASSERT_TRUE(w.finite) << what << ": non-finite at frame " << f << " (" << w.nonFiniteWhere << ")\n"
+                                  << allAssignments(s);
+        }
+        for (const Vec3& x : w.cloth.x)
+            ASSERT_TRUE(x.allFinite()) << what;
+        EXPECT_EQ(w.tearLog.validationError, "") << what;
+        EXPECT_EQ(validateCloth(w.cloth), "") << what;
+        tore += w.tearLog.total() > 0;
+        RecordProperty("run" + std::to_string(run), what + " tears " + std::to_string(w.tearLog.total()));
+    }
+    EXPECT_GT(tore, 0) << "some of the runs must tear, or tearing is not being tested";
+    // A run whose cloth tears into more than 20x its particles is stopped there (finite so far):
+    // such cascades happen at extreme corners of the safe ranges (an 18 m x 0.11 m strip at tear
+    // threshold 2.7 without the length limit shreds into slivers). Counted, not failed: the claim
+    // tested here is finiteness. Reported in the test's XML properties.
+    RecordProperty("cascades", std::to_string(cascades));
+}
+
+} // namespace
