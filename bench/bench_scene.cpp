@@ -63,7 +63,9 @@ World settledCurtain(const CurtainOptions& o) {
     auto it = cache.find(key);
     if (it == cache.end()) {
         const std::string r = std::to_string(o.resolution);
-        const std::vector<std::string> overrides = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r};
+        // Sleep off: these cases time the simulation of a cloth at rest, which would otherwise sleep.
+        const std::vector<std::string> overrides = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r,
+                                                    "sleep.enabled=false"};
         World w;
         if (std::string err = loadScene(w, "curtain", overrides); !err.empty()) throw std::runtime_error(err);
         const int frames = int(std::lround(o.settleSeconds / w.settings.time.frameDt));

@@ -91,6 +91,13 @@ struct ClothSettings {
     float tilt = 0.f;          // deg, [-90, 90] rotation about the top edge (0 = hanging vertical, 90 = horizontal)
 };
 
+// A cloth at rest stops being simulated until something can touch it (src/core/sleep.cpp).
+struct SleepSettings {
+    bool enabled = true;  // sleep when every particle is slower than `speed` for `delay` seconds
+    float speed = 1e-3f;  // m/s, [1e-6, 1]  at rest: every particle slower than this
+    float delay = 1.f;    // s, [0, 60]      at rest this long before sleeping
+};
+
 struct SceneParams {
     float pullAngle = 0.f;   // deg, [-180, 180] pull scene: direction in the cloth plane, 0 = straight down
     float pullSpeed = 0.5f;  // m/s, [0, 20]
@@ -112,6 +119,7 @@ struct Settings {
     CollisionSettings collision;
     TearSettings tear;
     ClothSettings cloth;
+    SleepSettings sleep;
     SceneParams scene;
 };
 

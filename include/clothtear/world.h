@@ -90,6 +90,7 @@ struct alignas(32) PackedParticle {
 struct SpringCache {
     std::vector<uint32_t> a16, b16;  // 16 * particle index of the two ends
     std::vector<Index> index;        // the spring's index in cloth.springs / cloth.bends
+    float maxRest = 0;               // m, longest structural rest length (ball broad phase)
     std::vector<float> rest, k, kd;  // m, N/m, N s/m
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
@@ -153,6 +154,12 @@ public:
     uint64_t steps = 0;     // frames
     float maxStrain = 0;    // over structural springs, after the last sub-step
     int frameSubsteps = 0;  // sub-steps of the last frame (time.substeps, or more: see guardSubsteps)
+    float maxSpeed = 0;     // m/s, fastest particle after the last frame
+    bool asleep = false;    // at rest and not simulated until something can touch it (sleep.cpp)
+    uint64_t sleptFrames = 0; // frames skipped asleep
+    // Benchmark switch, not a parameter: false makes the ball phases test every triangle instead of
+    // the particles near each ball (what the broad phase saves, bench/README.md).
+    bool ballBroadPhase = true;
     bool finite = true;     // false once any NaN/Inf appeared in the state
     std::string nonFiniteWhere; // phase and particle of the first non-finite value
 
@@ -167,6 +174,8 @@ public:
     void pinByMode(PinMode mode);
     void step();    // one frame
     void substep(); // one sub-step of frameDt / time.substeps (exposed for tests and benchmarks)
+
+    void wake(); // something moved the cloth from outside the step (tools, impulses): simulate again
 
     // Sub-steps the next frame takes: time.substeps, raised by the stability guard (when on, with
     // an explicit integrator) towards frameDt / stableStepEstimate(), at most time.max_substeps.
@@ -184,6 +193,13 @@ private:
     StepScratch scratch_;
     int substepsNow_ = 0; // sub-steps of the frame being stepped (0 outside step(): time.substeps)
     uint64_t guardKey_ = ~uint64_t(0);
+    // Sleep (sleep.cpp): when the cloth came to rest, and what it looked like when it fell asleep.
+    double restSince_ = -1;
+    uint64_t sleepSettingsHash_ = 0, sleepTopology_ = 0, sleepPins_ = 0;
+    Vec3 sleepLo_ = Vec3::Zero(), sleepHi_ = Vec3::Zero(); // m, the cloth's box
+    bool stayAsleep();  // asleep and nothing can touch the cloth this frame
+    void updateSleep(); // after a frame: at rest long enough?
+    float ballEdgeBound() const; // m, bound on every triangle edge this sub-step (ball broad phase)
     double guardStep_ = 0; // s, cached stableStepEstimate()
     void phaseForces(float dt);
     void phaseSprings(float dt);

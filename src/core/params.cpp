@@ -74,6 +74,10 @@ const ParamInfo kParams[] = {
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
     CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
 
+    CT_B("sleep.enabled", sleep.enabled, "Stop simulating a cloth at rest until a ball, driver, wind, impulse or change of settings can move it", false),
+    CT_F("sleep.speed", sleep.speed, 1e-5, 0.1, 1e-6, 1, "m/s", "Sleep: a cloth whose particles are all slower than this is at rest", false),
+    CT_F("sleep.delay", sleep.delay, 0.1, 10, 0, 60, "s", "Sleep: how long the cloth must be at rest before it sleeps", false),
+
     CT_E("cloth.mesh", cloth.mesh, kMeshNames, "Mesh type", true),
     CT_I("cloth.resolution_x", cloth.resolutionX, 2, 256, 2, 2048, "", "Particles across", true),
     CT_I("cloth.resolution_y", cloth.resolutionY, 2, 256, 2, 2048, "", "Particles down", true),

@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace clothtear {
 
@@ -101,6 +102,8 @@ std::string World::rebuild(const MeshData& mesh) {
     time = 0;
     steps = 0;
     maxStrain = 0;
+    wake();
+    sleptFrames = 0;
     finite = true;
     nonFiniteWhere.clear();
     pinByMode(settings.cloth.pin);
@@ -150,12 +153,19 @@ void World::pinByMode(PinMode mode) {
 
 void World::step() {
     applySettings();
+    if (stayAsleep()) {
+        time += settings.time.frameDt;
+        ++steps;
+        ++sleptFrames;
+        return;
+    }
     frameSubsteps = guardSubsteps();
     substepsNow_ = frameSubsteps;
     for (int i = 0; i < frameSubsteps; ++i) substep();
     substepsNow_ = 0;
     phaseBookkeeping();
     ++steps;
+    updateSleep();
 }
 
 // The stability guard, first part: with an explicit integrator, take enough sub-steps that the
@@ -293,6 +303,8 @@ void World::refreshSpringCache(float dt) {
     fill(cloth.springs, ns, 0, m.stretchStiffness, m.stretchDamping);
     fill(cloth.bends, nb, ns, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(dt, guardDragPerMass(dt));
+    S.maxRest = 0.f;
+    for (size_t e = 0; e < ns; ++e) S.maxRest = std::max(S.maxRest, S.rest[e]);
     S.threadRange.clear(); // recomputed for the thread count in use
     S.key = key;
 }
@@ -1057,15 +1069,28 @@ void World::phaseTear() {
 
 // ========================================================================================= [COLLIDE]
 
+// The ball broad phase needs a bound on every triangle edge (collide.cpp, trianglesIn). With tearing,
+// a spring past its tear threshold tears in this sub-step's tear phase; with the limit alone, none
+// stays past the limit; the factor 2 covers what one sub-step of motion adds before the limit and
+// the tear phase run. Without either, no bound: every triangle is tested.
+float World::ballEdgeBound() const {
+    const TearSettings& T = settings.tear;
+    float strain = std::numeric_limits<float>::infinity();
+    if (T.enabled) strain = std::max({T.threshold, T.weakThreshold, T.onePointThreshold});
+    else if (settings.limit.enabled && settings.limit.iterations > 0) strain = settings.limit.maxStretch;
+    if (!ballBroadPhase || scratch_.springs.maxRest <= 0.f) strain = std::numeric_limits<float>::infinity();
+    return 2.f * scratch_.springs.maxRest * (1.f + strain);
+}
+
 void World::phaseCollide(float dt) {
     const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
-    collideBalls(cloth, balls, settings.collision, g, dt, scratch_.packed.data(), scratch_.contacts);
+    collideBalls(cloth, balls, settings.collision, g, dt, ballEdgeBound(), scratch_.packed.data(), scratch_.contacts);
 }
 
 void World::phaseContact(float dt) {
     // Without limiting nothing holds the cloth back against a ball: the collide phase said it all.
     const bool held = settings.limit.enabled && settings.limit.iterations > 0;
-    settleContacts(cloth, balls, settings.collision, dt, held, scratch_.contacts, scratch_.contactOf);
+    settleContacts(cloth, balls, settings.collision, dt, ballEdgeBound(), held, scratch_.contacts, scratch_.contactOf);
     scratch_.contacts.clear();
 }
 
@@ -1079,6 +1104,7 @@ void World::phaseBookkeeping() {
     const int threads = threadsFor(n);
     float worstLen2[kMaxThreadSlots], worstRest2[kMaxThreadSlots];
     size_t firstBad[kMaxThreadSlots];
+    float speed2[kMaxThreadSlots];
     const bool checkFinite = finite;
     parallelRegion(std::max(ns, n), threads, [&](int t, int nt) {
         const Chunk c = chunkOf(ns, t, nt);
@@ -1091,22 +1117,29 @@ void World::phaseBookkeeping() {
         worstLen2[t] = len2Max;
         worstRest2[t] = rest2Max;
         firstBad[t] = n;
+        speed2[t] = 0.f;
         if (!checkFinite) return;
         const Chunk pc = chunkOf(n, t, nt);
-        for (size_t p = pc.begin; p < pc.end; ++p)
+        float fastest = 0.f; // for sleep.cpp
+        for (size_t p = pc.begin; p < pc.end; ++p) {
             if (!cloth.x[p].allFinite() || !cloth.v[p].allFinite()) {
                 firstBad[t] = p;
                 break;
             }
+            fastest = std::max(fastest, cloth.v[p].squaredNorm());
+        }
+        speed2[t] = fastest;
     });
     const int used = (threads > 1 && std::max(ns, n) >= kParallelWork) ? threads : 1;
-    float worst = 0.f;
+    float worst = 0.f, fastest2 = 0.f;
     size_t bad = n;
     for (int k = 0; k < used; ++k) {
         worst = std::max(worst, std::sqrt(worstLen2[k] / worstRest2[k]) - 1.f);
         bad = std::min(bad, firstBad[k]);
+        fastest2 = std::max(fastest2, speed2[k]);
     }
     maxStrain = worst;
+    maxSpeed = checkFinite ? std::sqrt(fastest2) : std::numeric_limits<float>::infinity();
     if (finite) {
         if (bad < n) {
             finite = false;
@@ -1121,6 +1154,7 @@ int World::applyImpulse(const Vec3& center, float radius, const Vec3& direction,
     Vec3 dir = direction;
     if (dir.squaredNorm() == 0.f) return 0;
     dir.normalize();
+    wake();
     int hit = 0;
     for (Index p = 0; p < cloth.particleCount(); ++p) {
         if (cloth.invMass[p] == 0.f || (cloth.x[p] - center).squaredNorm() > radius * radius) continue;

@@ -1,0 +1,96 @@
+// Sleep (src/core/sleep.cpp) and the ball broad phase (src/core/collide.cpp, trianglesIn): what
+// they skip must not change what is simulated.
+#include "clothtear/scenes.h"
+#include "clothtear/world.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace clothtear;
+
+namespace {
+
+World settled(std::vector<std::string> extra = {}) {
+    World w;
+    std::vector<std::string> o = {"cloth.resolution_x=12", "cloth.resolution_y=12", "air.drag=2"};
+    o.insert(o.end(), extra.begin(), extra.end());
+    EXPECT_EQ(loadScene(w, "curtain", o), "");
+    for (int f = 0; f < 6 * 60 && !w.asleep; ++f)
+        w.step();
+    return w;
+}
+
+// A curtain at rest falls asleep; asleep, frames leave the state exactly as it was; each way of
+// touching it wakes it: a ball coming near, unpinning a particle, an impulse, a changed parameter.
+TEST(Sleep, RestingCurtainSleepsAndWakesWhenTouched) {
+    World w = settled();
+    ASSERT_TRUE(w.asleep) << "max speed " << w.maxSpeed << " m/s";
+    EXPECT_LT(w.maxSpeed, w.settings.sleep.speed);
+    const std::vector<Vec3> x = w.cloth.x;
+    const uint64_t substeps = w.profile.substeps;
+    for (int f = 0; f < 30; ++f)
+        w.step();
+    EXPECT_TRUE(w.asleep);
+    EXPECT_EQ(w.cloth.x, x);
+    EXPECT_EQ(w.profile.substeps, substeps) << "asleep, nothing is simulated";
+    EXPECT_EQ(w.sleptFrames, 30u);
+
+    // A ball far away does not wake it; one flying at it does, before it arrives.
+    Ball far;
+    far.x = Vec3(0.f, 0.f, 10.f);
+    w.balls.push_back(far);
+    w.step();
+    EXPECT_TRUE(w.asleep);
+    w.balls[0].v = Vec3(0.f, 0.f, -600.f); // reaches the cloth within this frame
+    w.step();
+    EXPECT_FALSE(w.asleep);
+    EXPECT_GT(w.profile.substeps, substeps);
+
+    World u = settled();
+    ASSERT_TRUE(u.asleep);
+    for (Index p = 0; p < u.cloth.particleCount(); ++p)
+        if (u.cloth.pinned(p)) {
+            u.cloth.setPinned(p, false);
+            break;
+        }
+    u.step();
+    EXPECT_FALSE(u.asleep) << "unpinning must wake it";
+
+    World i = settled();
+    ASSERT_TRUE(i.asleep);
+    i.applyImpulse(i.cloth.x[0], 0.5f, Vec3(0, 0, 1), 1.f);
+    i.step();
+    EXPECT_FALSE(i.asleep) << "an impulse must wake it";
+
+    World g = settled();
+    ASSERT_TRUE(g.asleep);
+    g.settings.gravity.x = 3.f;
+    g.step();
+    EXPECT_FALSE(g.asleep) << "a changed parameter must wake it";
+
+    World off = settled({"sleep.enabled=false"});
+    EXPECT_FALSE(off.asleep);
+}
+
+// The broad phase only skips triangles that cannot touch a ball: a ball thrown through a tearing
+// cloth gives the same state, to the bit, with it and without it (every triangle tested).
+TEST(BroadPhase, SameResultAsTestingEveryTriangle) {
+    auto run = [](bool broad) {
+        World w;
+        EXPECT_EQ(loadScene(w, "ball-r1-v3-high", std::vector<std::string>{"cloth.resolution_x=24", "cloth.resolution_y=24"}),
+                  "");
+        w.ballBroadPhase = broad;
+        for (int f = 0; f < 45; ++f)
+            w.step();
+        EXPECT_GT(w.tearLog.total(), 0u) << "the ball must tear the cloth (contacts with torn triangles)";
+        return w;
+    };
+    const World a = run(true), b = run(false);
+    ASSERT_EQ(a.cloth.particleCount(), b.cloth.particleCount());
+    EXPECT_EQ(a.cloth.x, b.cloth.x);
+    EXPECT_EQ(a.balls[0].x, b.balls[0].x);
+}
+
+} // namespace
