@@ -96,7 +96,7 @@ Run simulate(const AccuracyScene& sc, const char* integrator, int substeps) {
     // times stay the same.
     int frameDiv = 1;
     while (substeps / frameDiv > 1000) frameDiv *= 2;
-    if (frameDiv > 1) o.push_back("time.frame_dt=" + std::to_string(1.0 / 60.0 / frameDiv));
+    if (frameDiv > 1) o.push_back("time.frame_dt=" + num(1.0 / 60.0 / frameDiv));
     o.push_back("time.substeps=" + std::to_string(substeps / frameDiv));
     World w = loadOrThrow(sc.scene, o);
     const size_t n0 = w.cloth.particleCount();

@@ -4,6 +4,7 @@
 #include "clothtear/world.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,13 @@ inline World loadOrThrow(const std::string& scene, const std::vector<std::string
     if (std::string err = loadScene(w, scene, overrides); !err.empty())
         throw std::runtime_error("scene '" + scene + "': " + err);
     return w;
+}
+
+// A number as --set accepts it, with all its digits (std::to_string keeps six decimals only).
+inline std::string num(double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.9g", v);
+    return b;
 }
 
 inline double secondsSince(std::chrono::steady_clock::time_point t0) {

@@ -165,36 +165,45 @@ inline bool boxesOverlap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
     return !((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any());
 }
 
-// The triangles whose box overlaps [lo, hi], once per ball and phase; the contact passes then look
-// at these only. Broad phase: every point of a triangle lies within its longest edge of each of its
-// corners, so a triangle overlapping the box has all its corners in the box grown by maxEdge (a
-// bound on every edge this sub-step). One pass over the particle positions finds those, and only
-// their triangles are tested: at 128 x 128 with a 1 m ball this scan took 11% of the step when it
-// tested every triangle's box (bench/README.md, "Skipping"). Without a bound (maxEdge infinite:
-// no limit and no tearing) every triangle is tested.
-std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, float maxEdge) {
+// The triangles whose box overlaps [lo, hi], once per ball and phase, in index order; the contact
+// passes then look at these only. Broad phase: every point of a triangle lies within its longest
+// edge of each of its corners, so a triangle overlapping the box has all its corners in the box
+// grown by maxEdge (a bound on every edge this sub-step). One pass over the particle positions
+// marks those (`inside`, scratch); each triangle is then listed once, from its lowest marked
+// corner. Where more than half of the cloth is marked, or without a bound (maxEdge infinite:
+// no limit and no tearing), every triangle's box is tested instead, which is then cheaper.
+std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, float maxEdge,
+                               std::vector<uint8_t>& inside) {
     std::vector<Index> near;
-    if (!std::isfinite(maxEdge)) {
+    const size_t n = cloth.particleCount();
+    size_t marked = n;
+    if (std::isfinite(maxEdge)) {
+        const Eigen::Array3f glo = lo.array() - maxEdge, ghi = hi.array() + maxEdge;
+        inside.resize(n);
+        marked = 0;
+        for (Index p = 0; p < n; ++p) {
+            const Eigen::Array3f x = cloth.x[p].array();
+            inside[p] = !((x < glo).any() || (x > ghi).any());
+            marked += inside[p];
+        }
+    }
+    if (2 * marked > n) {
         for (Index ti = 0; ti < Index(cloth.triangles.size()); ++ti) {
             const Triangle& tri = cloth.triangles[ti];
             if (boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near.push_back(ti);
         }
         return near;
     }
-    const Eigen::Array3f glo = lo.array() - maxEdge, ghi = hi.array() + maxEdge;
-    for (Index p = 0; p < Index(cloth.particleCount()); ++p) {
-        const Eigen::Array3f x = cloth.x[p].array();
-        if ((x < glo).any() || (x > ghi).any()) continue;
-        near.insert(near.end(), cloth.particleTris[p].begin(), cloth.particleTris[p].end());
+    for (Index p = 0; p < n; ++p) {
+        if (!inside[p]) continue;
+        for (Index ti : cloth.particleTris[p]) {
+            const Triangle& tri = cloth.triangles[ti];
+            bool first = true;
+            for (Index q : tri.p) first &= !(q < p && inside[q]);
+            if (first && boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near.push_back(ti);
+        }
     }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    size_t keep = 0;
-    for (Index ti : near) {
-        const Triangle& tri = cloth.triangles[ti];
-        if (boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near[keep++] = ti;
-    }
-    near.resize(keep);
+    std::sort(near.begin(), near.end()); // the order of a full scan: results do not depend on the broad phase
     return near;
 }
 
@@ -218,7 +227,7 @@ void forTrianglesIn(const Cloth& cloth, const std::vector<Index>& near, const Ve
 // judged relative to the moving cloth: the ball's start c0 against where the triangle started, so a
 // triangle that moved through the ball counts as crossed as much as a ball that moved through it.
 void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, const CollisionSettings& s, float dt,
-                 float maxEdge, PackedParticle* packed, std::vector<BallContact>& contacts) {
+                 float maxEdge, std::vector<uint8_t>& inside, PackedParticle* packed, std::vector<BallContact>& contacts) {
     const float R = ball.radius + s.thickness;
     const Vec3 lo = c0.cwiseMin(ball.x).array() - R, hi = c0.cwiseMax(ball.x).array() + R;
     // Pass 0 resolves only the triangles the ball is through, so that it is back on its side before
@@ -228,7 +237,7 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
     // nothing is left inside the ball: the contact phase must see only what the limit did.
     const size_t first = contacts.size();
     // Pushed triangles move away from the ball; a margin of R more covers those pushed into the box.
-    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R, maxEdge);
+    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R, maxEdge, inside);
     for (int pass = 0; pass < 1 + kContactPasses; ++pass) {
         bool pushed = false;
         forTrianglesIn(cloth, near, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
@@ -265,12 +274,12 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
 // triangle in the ball (moved in by the limit pulling on its neighbours) is pushed out two-way, as in
 // the collide phase. The sides recorded by the collide phase hold: a triangle the limit snapped
 // through the ball centre pushes the ball back. An immovable ball (mass 0) always pushes the cloth.
-void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, float maxEdge,
+void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, float maxEdge, std::vector<uint8_t>& inside,
                 const std::vector<BallContact>& contacts, const int32_t* contactOf) {
     const float R = ball.radius + s.thickness;
     const Vec3 lo = ball.x.array() - R, hi = ball.x.array() + R;
     const float moveTol2 = sq(1e-5f * R);
-    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R, maxEdge);
+    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R, maxEdge, inside);
     for (int pass = 0; pass < 2; ++pass)
         forTrianglesIn(cloth, near, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
                                           const Vec3& nt) {
@@ -329,23 +338,25 @@ void collideGround(Cloth& cloth, const CollisionSettings& s, float dt) {
 void collideBalls(Cloth& cloth, std::vector<Ball>& balls, const CollisionSettings& s, const Vec3& gravity, float dt,
                   float maxEdge, PackedParticle* packed, std::vector<BallContact>& contacts) {
     contacts.clear();
+    std::vector<uint8_t> inside; // broad-phase scratch, shared by the balls
     for (uint32_t i = 0; i < balls.size(); ++i) {
         Ball& ball = balls[i];
         const Vec3 c0 = ball.x;
         integrateBall(ball, s, gravity, dt);
-        collideBall(cloth, ball, i, c0, s, dt, maxEdge, packed, contacts);
+        collideBall(cloth, ball, i, c0, s, dt, maxEdge, inside, packed, contacts);
     }
 }
 
 void settleContacts(Cloth& cloth, std::vector<Ball>& balls, const CollisionSettings& s, float dt, float maxEdge,
                     bool clothHeld, const std::vector<BallContact>& contacts, std::vector<int32_t>& contactOf) {
     contactOf.resize(cloth.triangles.size(), -1);
+    std::vector<uint8_t> inside; // broad-phase scratch, shared by the balls
     for (const BallContact& c : contacts)
         for (Index p : cloth.triangles[c.triangle].p) cloth.flags[p] &= uint8_t(~kTouched);
     for (uint32_t i = 0; i < balls.size() && clothHeld; ++i) {
         for (size_t k = 0; k < contacts.size(); ++k)
             if (contacts[k].ball == i) contactOf[contacts[k].triangle] = int32_t(k);
-        settleBall(cloth, balls[i], s, dt, maxEdge, contacts, contactOf.data());
+        settleBall(cloth, balls[i], s, dt, maxEdge, inside, contacts, contactOf.data());
         for (const BallContact& c : contacts) contactOf[c.triangle] = -1;
     }
     if (s.ground) collideGround(cloth, s, dt);
