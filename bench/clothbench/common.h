@@ -16,7 +16,7 @@ struct BenchOptions {
     std::string out = "bench-out"; // folder for CSV and SVG files
     bool quick = false;            // fewer points and shorter runs (a smoke run, minutes instead of tens)
     uint64_t seed = 1;             // stress mode: the random script
-    double stressMinutes = 3;      // stress mode: wall-clock length of the randomized run
+    double stressSeconds = 120;    // stress mode: simulated seconds of the randomized run
     int stressResolution = 128;    // stress mode: particles per side
     int threads = 1;               // OpenMP threads for the timed runs of every mode but `peers`
     std::string commandLine;       // how this run was started, written into every plot

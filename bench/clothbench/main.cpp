@@ -1,7 +1,7 @@
 // clothbench: the measurements behind "fast and accurate" (bench/README.md), headless, writing CSV
 // and SVG into one folder.
 //
-//   clothbench --mode MODE [--out DIR] [--quick] [--threads N] [--seed S] [--stress-minutes M]
+//   clothbench --mode MODE [--out DIR] [--quick] [--threads N] [--seed S] [--stress-seconds T]
 //
 // Modes: accuracy (run time against error, convergence orders), stability (largest stable step
 // against stiffness and density), static (equilibrium against the static solve, mesh refinement),
@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.threads, "OpenMP threads for the timed runs (peers: both 1 and this)")
         ->check(CLI::Range(1, 64));
     app.add_option("--seed", o.seed, "Stress mode: seed of the random interaction script");
-    app.add_option("--stress-minutes", o.stressMinutes, "Stress mode: wall-clock minutes")->check(CLI::Range(0.01, 600.0));
+    app.add_option("--stress-seconds", o.stressSeconds, "Stress mode: simulated seconds (the script depends on the seed only)")
+        ->check(CLI::Range(0.1, 36000.0));
     app.add_option("--stress-resolution", o.stressResolution, "Stress mode: particles per side")
         ->check(CLI::Range(4, 512));
     try {
