@@ -107,9 +107,11 @@ TEST(Integrators, ReferencesAreStableWhereExplicitIntegrationExplodes) {
     auto run = [](const char* integrator, float& worstStrain) {
         World w;
         EXPECT_EQ(loadScene(w, "curtain",
-                            std::vector<std::string>{std::string("time.integrator=") + integrator, "time.substeps=1",
-                             "time.stability_guard=false", "limit.enabled=false", "tear.enabled=false",
-                             "material.stretch_stiffness=5000", "cloth.resolution_x=16", "cloth.resolution_y=16"}),
+                            std::vector<std::string>{std::string("time.integrator=") + integrator,
+                                                     "time.substeps=1", "time.stability_guard=false",
+                                                     "limit.enabled=false", "tear.enabled=false",
+                                                     "material.stretch_stiffness=5000",
+                                                     "cloth.resolution_x=16", "cloth.resolution_y=16"}),
                   "");
         worstStrain = 0;
         for (int f = 0; f < 120 && w.finite; ++f) {
@@ -137,21 +139,25 @@ TEST(Integrators, ReferencesKeepPinsStillAndFallLikeTheDiscreteFormula) {
     for (const char* integrator : {"implicit-euler", "xpbd"}) {
         World w;
         ASSERT_EQ(loadScene(w, "curtain",
-                            std::vector<std::string>{std::string("time.integrator=") + integrator, "cloth.resolution_x=12",
-                             "cloth.resolution_y=12", "tear.enabled=false", "collision.ground=false"}),
+                            std::vector<std::string>{std::string("time.integrator=") + integrator,
+                                                     "cloth.resolution_x=12", "cloth.resolution_y=12",
+                                                     "tear.enabled=false", "collision.ground=false"}),
                   "");
         const std::vector<Vec3> x0 = w.cloth.x;
         for (int f = 0; f < 30; ++f)
             w.step();
-        for (Index p = 0; p < w.cloth.particleCount(); ++p)
-            if (w.cloth.pinned(p))
+        for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+            if (w.cloth.pinned(p)) {
                 ASSERT_EQ(w.cloth.x[p], x0[p]) << integrator << " moved pinned particle " << p;
+            }
+        }
 
         World fall;
         ASSERT_EQ(loadScene(fall, "curtain",
-                            std::vector<std::string>{std::string("time.integrator=") + integrator, "cloth.resolution_x=8",
-                             "cloth.resolution_y=8", "cloth.pin=none", "air.drag=0", "tear.enabled=false",
-                             "collision.ground=false"}),
+                            std::vector<std::string>{std::string("time.integrator=") + integrator,
+                                                     "cloth.resolution_x=8", "cloth.resolution_y=8",
+                                                     "cloth.pin=none", "air.drag=0", "tear.enabled=false",
+                                                     "collision.ground=false"}),
                   "");
         const float y0 = fall.cloth.x[0].y();
         const int frames = 20;
@@ -171,15 +177,17 @@ TEST(Integrators, ReferencesConserveMomentumWithoutExternalForces) {
     for (const char* integrator : {"implicit-euler", "xpbd"}) {
         World w;
         ASSERT_EQ(loadScene(w, "curtain",
-                            std::vector<std::string>{std::string("time.integrator=") + integrator, "cloth.mesh=irregular",
-                             "cloth.resolution_x=12", "cloth.resolution_y=10", "cloth.pin=none", "gravity.y=0",
-                             "air.drag=0", "limit.enabled=false", "tear.enabled=false", "collision.ground=false",
-                             "time.cg_tolerance=1e-9"}),
+                            std::vector<std::string>{
+                                std::string("time.integrator=") + integrator, "cloth.mesh=irregular",
+                                "cloth.resolution_x=12", "cloth.resolution_y=10", "cloth.pin=none",
+                                "gravity.y=0", "air.drag=0", "limit.enabled=false", "tear.enabled=false",
+                                "collision.ground=false", "time.cg_tolerance=1e-9"}),
                   "");
         Rng rng(3);
         double scale = 0;
         for (Index p = 0; p < w.cloth.particleCount(); ++p) {
-            w.cloth.v[p] = 4.f * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+            w.cloth.v[p] =
+                4.f * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
             scale += w.cloth.particleMass(p) * w.cloth.v[p].cast<double>().norm();
         }
         auto momentum = [&] {

@@ -29,15 +29,16 @@ namespace {
 bool stableAt(double dt, float stiffness) {
     World w;
     EXPECT_EQ(loadScene(w, "swing",
-                        std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12", "limit.enabled=false",
-                                                 "time.stability_guard=false", "time.substeps=1",
-                                                 "time.frame_dt=" + std::to_string(dt),
+                        std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12",
+                                                 "limit.enabled=false", "time.stability_guard=false",
+                                                 "time.substeps=1", "time.frame_dt=" + std::to_string(dt),
                                                  "material.stretch_stiffness=" + std::to_string(stiffness)}),
               "");
     const int frames = int(std::ceil(1.0 / dt));
     for (int f = 0; f < frames && w.finite; ++f) {
         w.step();
-        if (w.maxStrain > 10.f) return false;
+        if (w.maxStrain > 10.f)
+            return false;
     }
     return w.finite;
 }
@@ -48,14 +49,16 @@ bool stableAt(double dt, float stiffness) {
 TEST(Stability, EstimateIsSafeAndWithinAFactorOfFourOfTheBlowUp) {
     for (float stiffness : {60.f, 2000.f}) {
         World w;
-        ASSERT_EQ(loadScene(w, "swing",
-                            std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12",
-                                                     "material.stretch_stiffness=" + std::to_string(stiffness)}),
-                  "");
+        ASSERT_EQ(
+            loadScene(w, "swing",
+                      std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12",
+                                               "material.stretch_stiffness=" + std::to_string(stiffness)}),
+            "");
         const double estimate = stableStepEstimate(w.cloth, w.settings);
         ASSERT_TRUE(std::isfinite(estimate));
         EXPECT_TRUE(stableAt(estimate, stiffness)) << "S=" << stiffness << " estimate " << estimate << " s";
-        EXPECT_FALSE(stableAt(4 * estimate, stiffness)) << "S=" << stiffness << " estimate " << estimate << " s";
+        EXPECT_FALSE(stableAt(4 * estimate, stiffness))
+            << "S=" << stiffness << " estimate " << estimate << " s";
     }
 }
 
@@ -66,7 +69,8 @@ TEST(Stability, EstimateIsSafeAndWithinAFactorOfFourOfTheBlowUp) {
 TEST(Stability, GuardPicksTheSubstepsTheEstimateNeeds) {
     World w;
     ASSERT_EQ(loadScene(w, "curtain",
-                        std::vector<std::string>{"cloth.resolution_x=64", "cloth.resolution_y=64", "time.max_substeps=200"}),
+                        std::vector<std::string>{"cloth.resolution_x=64", "cloth.resolution_y=64",
+                                                 "time.max_substeps=200"}),
               "");
     const double estimate = stableStepEstimate(w.cloth, w.settings);
     const int need = int(std::ceil(double(w.settings.time.frameDt) / estimate));
@@ -104,9 +108,15 @@ Settings randomSafeSettings(Rng& rng) {
     for (const ParamInfo& p : allParams()) {
         double v = 0;
         switch (p.type) {
-        case ParamType::Float: v = rng.uniform(p.safeMin, p.safeMax); break;
-        case ParamType::Int: v = std::floor(rng.uniform(p.safeMin, p.safeMax + 1)); break;
-        case ParamType::Bool: v = rng.uniform() < 0.5; break;
+        case ParamType::Float:
+            v = rng.uniform(p.safeMin, p.safeMax);
+            break;
+        case ParamType::Int:
+            v = std::floor(rng.uniform(p.safeMin, p.safeMax + 1));
+            break;
+        case ParamType::Bool:
+            v = rng.uniform() < 0.5;
+            break;
         case ParamType::Enum: {
             int n = 0;
             while (p.enumNames[n])
@@ -143,17 +153,20 @@ TEST(Stability, RandomSafeParameterSetsStayFinite) {
         World w;
         w.settings = randomSafeSettings(rng);
         const Integrator integ = w.settings.time.integrator;
-        const double budget = integ == Integrator::ImplicitEuler ? 1500 : integ == Integrator::Xpbd ? 6000 : 20000;
+        const double budget = integ == Integrator::ImplicitEuler ? 1500
+                              : integ == Integrator::Xpbd        ? 6000
+                                                                 : 20000;
         const int frames = int(std::ceil(5.0 / w.settings.time.frameDt));
         w.settings.time.substeps = std::clamp(w.settings.time.substeps, 1, std::max(1, int(budget / frames)));
         w.settings.time.maxSubsteps = std::max(w.settings.time.maxSubsteps, 1);
         ASSERT_EQ(w.rebuild(), "") << "run " << run;
         const Settings& s = w.settings;
-        std::string what = "run " + std::to_string(run) + ": " + formatParamValue(s, *findParam("time.integrator")) +
-                           " " + std::to_string(s.cloth.resolutionX) + "x" + std::to_string(s.cloth.resolutionY) +
-                           " frame_dt " + std::to_string(s.time.frameDt) + " substeps " + std::to_string(s.time.substeps) +
-                           " S " + std::to_string(s.material.stretchStiffness) + " rho " +
-                           std::to_string(s.material.density) + " pin " + formatParamValue(s, *findParam("cloth.pin"));
+        std::string what =
+            "run " + std::to_string(run) + ": " + formatParamValue(s, *findParam("time.integrator")) + " " +
+            std::to_string(s.cloth.resolutionX) + "x" + std::to_string(s.cloth.resolutionY) + " frame_dt " +
+            std::to_string(s.time.frameDt) + " substeps " + std::to_string(s.time.substeps) + " S " +
+            std::to_string(s.material.stretchStiffness) + " rho " + std::to_string(s.material.density) +
+            " pin " + formatParamValue(s, *findParam("cloth.pin"));
         // Centre of the cloth, to aim at.
         Vec3 centre = Vec3::Zero();
         for (const Vec3& x : w.cloth.x)
@@ -162,7 +175,8 @@ TEST(Stability, RandomSafeParameterSetsStayFinite) {
         const Index grabbed = Index(rng.below(uint32_t(w.cloth.particleCount())));
         const size_t initialParticles = w.cloth.particleCount();
         const Vec3 dragVelocity =
-            s.scene.pullSpeed * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+            s.scene.pullSpeed *
+            Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
         for (int f = 0; f < frames; ++f) {
             const double t = w.time;
             if (f == frames / 5 || f == frames / 2) { // throw a ball from 1.5 m in front of the cloth
@@ -188,7 +202,8 @@ TEST(Stability, RandomSafeParameterSetsStayFinite) {
                 RecordProperty("cascade_run" + std::to_string(run), what);
                 break;
             }
-            ASSERT_TRUE(w.finite) << what << ": non-finite at frame " << f << " (" << w.nonFiniteWhere << ")\n"
+            ASSERT_TRUE(w.finite) << what << ": non-finite at frame " << f << " (" << w.nonFiniteWhere
+                                  << ")\n"
                                   << allAssignments(s);
         }
         for (const Vec3& x : w.cloth.x)

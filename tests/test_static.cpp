@@ -29,8 +29,9 @@ namespace {
 World springCurtain(int resolution, std::vector<std::string> extra = {}) {
     World w;
     const std::string r = std::to_string(resolution);
-    std::vector<std::string> o = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "limit.enabled=false",
-                                  "time.stability_guard=false", "tear.enabled=false", "collision.ground=false"};
+    std::vector<std::string> o = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r,
+                                  "limit.enabled=false",     "time.stability_guard=false",
+                                  "tear.enabled=false",      "collision.ground=false"};
     o.insert(o.end(), extra.begin(), extra.end());
     EXPECT_EQ(loadScene(w, "curtain", o), "");
     return w;

@@ -43,7 +43,8 @@ const double kTimes[] = {0.5, 1.0, 2.0};
 constexpr int kPlotTime = 1; // index into kTimes: the run-time plot and the pick use the error at 1 s
 constexpr int kFitTime = 0;  // the orders and the error-against-dt plot use the error at 0.5 s
 
-const std::vector<std::string> kSmooth = {"limit.enabled=false", "time.stability_guard=false", "time.verlet_friction=0"};
+const std::vector<std::string> kSmooth = {"limit.enabled=false", "time.stability_guard=false",
+                                          "time.verlet_friction=0"};
 
 std::vector<AccuracyScene> scenes(bool quick) {
     auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -55,7 +56,8 @@ std::vector<AccuracyScene> scenes(bool quick) {
         {"swing", "springs", with(res32, kSmooth), "verlet", quick ? 512 : 2048},
         {"swing", "app", res32, "semi-implicit-euler", quick ? 1024 : 4096},
     };
-    if (quick) return s;
+    if (quick)
+        return s;
     s.push_back({"curtain", "springs", with(with(res32, kSmooth), {"tear.enabled=false"}), "verlet", 2048});
     s.push_back({"drop", "app", res32, "semi-implicit-euler", 4096});
     s.push_back({"ball-r1-v3-high", "app", {}, "semi-implicit-euler", 1024});
@@ -85,7 +87,7 @@ struct Run {
     std::vector<std::vector<Vec3>> snapshots; // positions of the original particles at kTimes
     double wallSeconds = 0;
     bool finite = true;
-    double seconds = 0;       // simulated
+    double seconds = 0; // simulated
     uint64_t cgIterations = 0;
 };
 
@@ -95,8 +97,10 @@ Run simulate(const AccuracyScene& sc, const char* integrator, int substeps) {
     // Past the parameter's range (2000 sub-steps) the frame is shortened instead; the snapshot
     // times stay the same.
     int frameDiv = 1;
-    while (substeps / frameDiv > 1000) frameDiv *= 2;
-    if (frameDiv > 1) o.push_back("time.frame_dt=" + num(1.0 / 60.0 / frameDiv));
+    while (substeps / frameDiv > 1000)
+        frameDiv *= 2;
+    if (frameDiv > 1)
+        o.push_back("time.frame_dt=" + num(1.0 / 60.0 / frameDiv));
     o.push_back("time.substeps=" + std::to_string(substeps / frameDiv));
     World w = loadOrThrow(sc.scene, o);
     const size_t n0 = w.cloth.particleCount();
@@ -105,7 +109,8 @@ Run simulate(const AccuracyScene& sc, const char* integrator, int substeps) {
     int frame = 0;
     for (double t : kTimes) {
         const int until = int(std::lround(t / double(w.settings.time.frameDt)));
-        for (; frame < until && w.finite; ++frame) w.step();
+        for (; frame < until && w.finite; ++frame)
+            w.step();
         r.snapshots.emplace_back(w.cloth.x.begin(), w.cloth.x.begin() + long(n0));
     }
     r.wallSeconds = secondsSince(t0);
@@ -133,31 +138,46 @@ double rmsError(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double s
 
 int runAccuracy(const BenchOptions& opt) {
     setThreads(opt.threads);
-    Csv points(opt.out + "/accuracy.csv", {"scene", "model", "integrator", "substeps", "dt_s", "wall_s_per_sim_s",
-                                           "finite", "err_t0.5", "err_t1", "err_t2", "cg_iterations_per_substep"});
-    Csv orders(opt.out + "/accuracy_orders.csv", {"scene", "model", "integrator", "order_at_0.5s", "points_fitted"});
+    Csv points(opt.out + "/accuracy.csv",
+               {"scene", "model", "integrator", "substeps", "dt_s", "wall_s_per_sim_s", "finite", "err_t0.5",
+                "err_t1", "err_t2", "cg_iterations_per_substep"});
+    Csv orders(opt.out + "/accuracy_orders.csv",
+               {"scene", "model", "integrator", "order_at_0.5s", "points_fitted"});
     Csv refs(opt.out + "/accuracy_reference.csv",
              {"scene", "model", "reference_integrator", "reference_substeps", "t", "change_when_halving_dt"});
-    Csv picks(opt.out + "/accuracy_pick.csv", {"scene", "model", "target_err_t1", "integrator", "substeps", "wall_s_per_sim_s", "err_t1"});
+    Csv picks(opt.out + "/accuracy_pick.csv",
+              {"scene", "model", "target_err_t1", "integrator", "substeps", "wall_s_per_sim_s", "err_t1"});
     const std::string machine = machineDescription();
     std::printf("\n== accuracy (RMS position error / cloth size vs a small-dt reference)\n");
     for (const AccuracyScene& sc : scenes(opt.quick)) {
         const double L = size(sc);
-        std::printf("\n%s / %s: reference %s at %d sub-steps per frame\n", sc.scene, sc.model, sc.referenceIntegrator,
-                    sc.referenceSubsteps);
+        std::printf("\n%s / %s: reference %s at %d sub-steps per frame\n", sc.scene, sc.model,
+                    sc.referenceIntegrator, sc.referenceSubsteps);
         const Run ref = simulate(sc, sc.referenceIntegrator, sc.referenceSubsteps);
         const Run ref2 = simulate(sc, sc.referenceIntegrator, 2 * sc.referenceSubsteps);
         std::vector<double> refChange;
         for (size_t k = 0; k < std::size(kTimes); ++k) {
             refChange.push_back(rmsError(ref.snapshots[k], ref2.snapshots[k], L));
-            refs.row(sc.scene, sc.model, sc.referenceIntegrator, sc.referenceSubsteps, kTimes[k], refChange[k]);
+            refs.row(sc.scene, sc.model, sc.referenceIntegrator, sc.referenceSubsteps, kTimes[k],
+                     refChange[k]);
         }
-        std::printf("  reference change when halving its dt: %.2e / %.2e / %.2e at 0.5 / 1 / 2 s%s\n", refChange[0],
-                    refChange[1], refChange[2], ref.finite && ref2.finite ? "" : " (NON-FINITE)");
+        std::printf("  reference change when halving its dt: %.2e / %.2e / %.2e at 0.5 / 1 / 2 s%s\n",
+                    refChange[0], refChange[1], refChange[2],
+                    ref.finite && ref2.finite ? "" : " (NON-FINITE)");
         Plot pt{std::string("error at 1 s against run time: ") + sc.scene + " (" + sc.model + ")",
-                "wall seconds per simulated second", "RMS error / cloth size at t = 1 s", true, true, {}, {}};
-        Plot pd{std::string("error at 0.5 s against sub-step: ") + sc.scene + " (" + sc.model + ")", "sub-step dt (s)",
-                "RMS error / cloth size at t = 0.5 s", true, true, {}, {}};
+                "wall seconds per simulated second",
+                "RMS error / cloth size at t = 1 s",
+                true,
+                true,
+                {},
+                {}};
+        Plot pd{std::string("error at 0.5 s against sub-step: ") + sc.scene + " (" + sc.model + ")",
+                "sub-step dt (s)",
+                "RMS error / cloth size at t = 0.5 s",
+                true,
+                true,
+                {},
+                {}};
         struct Best {
             std::string integrator;
             int substeps = 0;
@@ -177,18 +197,22 @@ int runAccuracy(const BenchOptions& opt) {
                 }
                 const double dt = 1.0 / 60.0 / sub;
                 double err[3];
-                for (size_t k = 0; k < 3; ++k) err[k] = r.finite ? rmsError(r.snapshots[k], ref.snapshots[k], L) : NAN;
+                for (size_t k = 0; k < 3; ++k)
+                    err[k] = r.finite ? rmsError(r.snapshots[k], ref.snapshots[k], L) : NAN;
                 const double perSim = r.wallSeconds / std::max(r.seconds, 1e-9);
                 const bool usable = r.finite && err[kPlotTime] < 1.0;
-                points.row(sc.scene, sc.model, in.name, sub, dt, perSim, int(r.finite), err[0], err[1], err[2],
-                           r.cgIterations / std::max(1.0, r.seconds * 60.0 * sub));
+                points.row(sc.scene, sc.model, in.name, sub, dt, perSim, int(r.finite), err[0], err[1],
+                           err[2], r.cgIterations / std::max(1.0, r.seconds * 60.0 * sub));
                 std::printf(" %d:%s", sub, usable ? "" : "x");
-                if (usable) std::printf("%.1e", err[kPlotTime]);
+                if (usable)
+                    std::printf("%.1e", err[kPlotTime]);
                 std::fflush(stdout);
-                if (!usable) continue;
+                if (!usable)
+                    continue;
                 st.points.emplace_back(perSim, err[kPlotTime]);
                 sd.points.emplace_back(dt, err[kFitTime]);
-                if (err[kFitTime] > 20 * refChange[kFitTime] && err[kFitTime] < 0.05) fit.emplace_back(dt, err[kFitTime]);
+                if (err[kFitTime] > 20 * refChange[kFitTime] && err[kFitTime] < 0.05)
+                    fit.emplace_back(dt, err[kFitTime]);
                 for (double target : {0.01, 0.001})
                     if (err[kPlotTime] <= target && perSim < best[target].wall)
                         best[target] = Best{in.name, sub, perSim, err[kPlotTime]};
@@ -201,11 +225,13 @@ int runAccuracy(const BenchOptions& opt) {
         }
         for (const auto& [target, b] : best) {
             picks.row(sc.scene, sc.model, target, b.integrator, b.substeps, b.wall, b.err);
-            std::printf("  cheapest with error <= %g at 1 s: %s, %d sub-steps (%.3g s per simulated s, error %.2e)\n",
-                        target, b.integrator.c_str(), b.substeps, b.wall, b.err);
+            std::printf(
+                "  cheapest with error <= %g at 1 s: %s, %d sub-steps (%.3g s per simulated s, error %.2e)\n",
+                target, b.integrator.c_str(), b.substeps, b.wall, b.err);
         }
         for (Plot* p : {&pt, &pd}) {
-            p->notes = {opt.commandLine, machine + "; reference change at 1 s: " + std::to_string(refChange[1])};
+            p->notes = {opt.commandLine,
+                        machine + "; reference change at 1 s: " + std::to_string(refChange[1])};
         }
         const std::string stem = opt.out + "/accuracy_" + sc.scene + "_" + sc.model;
         writeSvg(pt, stem + ".svg");

@@ -40,17 +40,19 @@ std::string machineDescription() {
             break;
         }
     double load[3] = {0, 0, 0};
-    if (getloadavg(load, 3) < 0) load[0] = -1;
+    if (getloadavg(load, 3) < 0)
+        load[0] = -1;
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%s, %ld logical CPUs, load average %.2f", model.c_str(), sysconf(_SC_NPROCESSORS_ONLN),
-                  load[0]);
+    std::snprintf(buf, sizeof buf, "%s, %ld logical CPUs, load average %.2f", model.c_str(),
+                  sysconf(_SC_NPROCESSORS_ONLN), load[0]);
     return buf;
 }
 
 size_t residentBytes() {
     std::ifstream f("/proc/self/statm");
     size_t pages = 0, resident = 0;
-    if (!(f >> pages >> resident)) return 0;
+    if (!(f >> pages >> resident))
+        return 0;
     return resident * size_t(sysconf(_SC_PAGESIZE));
 }
 
@@ -60,7 +62,8 @@ int main(int argc, char** argv) {
     using namespace clothtear::bench;
     BenchOptions o;
     std::string mode;
-    CLI::App app{"clothbench: run time against error, stability, static accuracy, skipping, stress and peers"};
+    CLI::App app{
+        "clothbench: run time against error, stability, static accuracy, skipping, stress and peers"};
     app.add_option("--mode", mode, "accuracy | stability | static | skipping | stress | peers | all")
         ->required()
         ->check(CLI::IsMember({"accuracy", "stability", "static", "skipping", "stress", "peers", "all"}));
@@ -69,7 +72,8 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.threads, "OpenMP threads for the timed runs (peers: both 1 and this)")
         ->check(CLI::Range(1, 64));
     app.add_option("--seed", o.seed, "Stress mode: seed of the random interaction script");
-    app.add_option("--stress-seconds", o.stressSeconds, "Stress mode: simulated seconds (the script depends on the seed only)")
+    app.add_option("--stress-seconds", o.stressSeconds,
+                   "Stress mode: simulated seconds (the script depends on the seed only)")
         ->check(CLI::Range(0.1, 36000.0));
     app.add_option("--stress-resolution", o.stressResolution, "Stress mode: particles per side")
         ->check(CLI::Range(4, 512));
@@ -82,7 +86,8 @@ int main(int argc, char** argv) {
         std::cerr << "clothbench: " << e.what() << " (see --help)\n";
         return 2;
     }
-    for (int i = 0; i < argc; ++i) o.commandLine += std::string(i ? " " : "") + argv[i];
+    for (int i = 0; i < argc; ++i)
+        o.commandLine += std::string(i ? " " : "") + argv[i];
     std::error_code ec;
     std::filesystem::create_directories(o.out, ec);
     if (ec || !std::filesystem::is_directory(o.out)) {
@@ -94,9 +99,11 @@ int main(int argc, char** argv) {
         {"skipping", runSkipping}, {"stress", runStress},       {"peers", runPeers}};
     std::cout << "clothbench: " << o.commandLine << "\nmachine: " << machineDescription() << "\n";
     try {
-        if (mode != "all") return modes.at(mode)(o);
+        if (mode != "all")
+            return modes.at(mode)(o);
         int status = 0;
-        for (const char* m : {"accuracy", "stability", "static", "skipping", "peers"}) status |= modes.at(m)(o);
+        for (const char* m : {"accuracy", "stability", "static", "skipping", "peers"})
+            status |= modes.at(m)(o);
         return status;
     } catch (const std::exception& e) {
         std::cerr << "clothbench: " << e.what() << "\n";

@@ -13,8 +13,8 @@
 //   particles: x, v read and written (48 B), packed copy written and read (64 B), force buffer
 //   written, read and cleared (48 B), inverse mass (4 B), tether anchor and length (8 B): 172 B.
 // Particle reads through the springs hit the cache (a band of the cloth): not counted.
-#include "common.h"
 #include "peers.h"
+#include "common.h"
 #include "report.h"
 
 #include <algorithm>
@@ -50,16 +50,19 @@ Bandwidth measureBandwidth(int threads) {
     for (int rep = 0; rep < 5; ++rep) {
         auto t0 = std::chrono::steady_clock::now();
 #pragma omp parallel for num_threads(threads) schedule(static)
-        for (long i = 0; i < long(n); ++i) a[size_t(i)] = b[size_t(i)];
+        for (long i = 0; i < long(n); ++i)
+            a[size_t(i)] = b[size_t(i)];
         double s = secondsSince(t0);
         bw.copy = std::max(bw.copy, 16.0 * double(n) / s / 1e9);
         t0 = std::chrono::steady_clock::now();
 #pragma omp parallel for num_threads(threads) schedule(static)
-        for (long i = 0; i < long(n); ++i) a[size_t(i)] = b[size_t(i)] + 3.0 * c[size_t(i)];
+        for (long i = 0; i < long(n); ++i)
+            a[size_t(i)] = b[size_t(i)] + 3.0 * c[size_t(i)];
         s = secondsSince(t0);
         bw.triad = std::max(bw.triad, 24.0 * double(n) / s / 1e9);
     }
-    if (a[n / 2] != 2.0 + 1.5) std::printf("(bandwidth check value off)\n");
+    if (a[n / 2] != 2.0 + 1.5)
+        std::printf("(bandwidth check value off)\n");
     return bw;
 }
 
@@ -71,9 +74,11 @@ struct Ours {
 
 Ours measureOurs(int n, int threads, int substeps) {
     const std::string r = std::to_string(n);
-    World settled = loadOrThrow("curtain", {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "sleep.enabled=false"});
+    World settled =
+        loadOrThrow("curtain", {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "sleep.enabled=false"});
     setThreads(std::max(threads, 1));
-    for (int f = 0; f < 90; ++f) settled.step();
+    for (int f = 0; f < 90; ++f)
+        settled.step();
     Ours o;
     double sum = 0;
     for (const Spring& s : settled.cloth.springs) {
@@ -88,11 +93,13 @@ Ours measureOurs(int n, int threads, int substeps) {
     for (int k = 0; k < 2; ++k) {
         setThreads(threadCounts[k]);
         World w = settled;
-        for (int i = 0; i < 20; ++i) w.substep(); // warm the caches
+        for (int i = 0; i < 20; ++i)
+            w.substep(); // warm the caches
         double best = 1e300;
         for (int rep = 0; rep < 5; ++rep) {
             const auto t0 = std::chrono::steady_clock::now();
-            for (int i = 0; i < substeps; ++i) w.substep();
+            for (int i = 0; i < substeps; ++i)
+                w.substep();
             best = std::min(best, 1000.0 * secondsSince(t0) / substeps);
         }
         o.msPerSubstep[k] = best;
@@ -106,17 +113,26 @@ int runPeers(const BenchOptions& opt) {
     const int threads = std::max(2, opt.threads);
     std::printf("\n== peers (ms per sub-step at rest, 2 m curtain, 10 sub-steps per 1/60 s frame)\n");
     const Bandwidth bw1 = measureBandwidth(1), bwN = measureBandwidth(threads);
-    std::printf("  memory bandwidth: copy %.1f / triad %.1f GB/s on 1 thread, %.1f / %.1f GB/s on %d\n", bw1.copy,
-                bw1.triad, bwN.copy, bwN.triad, threads);
+    std::printf("  memory bandwidth: copy %.1f / triad %.1f GB/s on 1 thread, %.1f / %.1f GB/s on %d\n",
+                bw1.copy, bw1.triad, bwN.copy, bwN.triad, threads);
     Csv csv(opt.out + "/peers.csv",
-            {"n", "ours_ms_1t", "ours_ms_nt", "threads", "ours_mean_stretch", "ours_worst_stretch", "ours_bytes",
-             "bound_ms_1t", "bound_ms_nt", "ours_over_bound_1t", "ours_over_bound_nt", "bullet_ms", "bullet_mean_stretch",
-             "bullet_worst_stretch", "bullet_over_ours_1t", "bullet_over_ours_nt", "triad_GBps_1t", "triad_GBps_nt"});
-    Plot plot{"time per sub-step against cloth size", "particles per side N", "ms per sub-step", true, true, {}, {}};
-    Series s1{"ours, 1 thread", {}, false, false}, sN{"ours, " + std::to_string(threads) + " threads", {}, false, false};
-    Series sb{"Bullet soft body (1 thread)", {}, false, false}, sbound{"bandwidth bound, 1 thread", {}, true, false};
-    std::printf("  %5s %10s %10s %9s %9s %10s %10s %10s %9s %9s %8s %8s\n", "N", "ours 1t", "ours Nt", "mean", "worst",
-                "bound 1t", "Bullet", "B mean", "B worst", "B/ours1t", "B/oursNt", "ours/bnd");
+            {"n", "ours_ms_1t", "ours_ms_nt", "threads", "ours_mean_stretch", "ours_worst_stretch",
+             "ours_bytes", "bound_ms_1t", "bound_ms_nt", "ours_over_bound_1t", "ours_over_bound_nt",
+             "bullet_ms", "bullet_mean_stretch", "bullet_worst_stretch", "bullet_over_ours_1t",
+             "bullet_over_ours_nt", "triad_GBps_1t", "triad_GBps_nt"});
+    Plot plot{"time per sub-step against cloth size",
+              "particles per side N",
+              "ms per sub-step",
+              true,
+              true,
+              {},
+              {}};
+    Series s1{"ours, 1 thread", {}, false, false},
+        sN{"ours, " + std::to_string(threads) + " threads", {}, false, false};
+    Series sb{"Bullet soft body (1 thread)", {}, false, false},
+        sbound{"bandwidth bound, 1 thread", {}, true, false};
+    std::printf("  %5s %10s %10s %9s %9s %10s %10s %10s %9s %9s %8s %8s\n", "N", "ours 1t", "ours Nt", "mean",
+                "worst", "bound 1t", "Bullet", "B mean", "B worst", "B/ours1t", "B/oursNt", "ours/bnd");
     std::string bulletNote;
     for (int n : opt.quick ? std::vector<int>{32, 64} : std::vector<int>{32, 64, 128, 256}) {
         const int substeps = n >= 256 ? 40 : n >= 128 ? 100 : 300;
@@ -125,21 +141,23 @@ int runPeers(const BenchOptions& opt) {
         const PeerResult b = runBulletCloth(n, 1.5, std::max(10, substeps / 4), 3);
         bulletNote = b.note;
         const double bound1 = o.bytes / (bw1.triad * 1e9) * 1e3, boundN = o.bytes / (bwN.triad * 1e9) * 1e3;
-        csv.row(n, o.msPerSubstep[0], o.msPerSubstep[1], threads, o.meanStretch, o.worstStretch, o.bytes, bound1, boundN,
-                o.msPerSubstep[0] / bound1, o.msPerSubstep[1] / boundN, b.available ? b.msPerSubstep : NAN,
-                b.available ? b.meanStretch : NAN, b.available ? b.worstStretch : NAN,
-                b.available ? b.msPerSubstep / o.msPerSubstep[0] : NAN, b.available ? b.msPerSubstep / o.msPerSubstep[1] : NAN,
-                bw1.triad, bwN.triad);
-        std::printf("  %5d %10.4f %10.4f %9.4f %9.4f %10.4f %10.4f %10.4f %9.4f %9.1f %8.1f %8.1f\n", n, o.msPerSubstep[0],
-                    o.msPerSubstep[1], o.meanStretch, o.worstStretch, bound1, b.available ? b.msPerSubstep : NAN,
-                    b.available ? b.meanStretch : NAN, b.available ? b.worstStretch : NAN,
+        csv.row(n, o.msPerSubstep[0], o.msPerSubstep[1], threads, o.meanStretch, o.worstStretch, o.bytes,
+                bound1, boundN, o.msPerSubstep[0] / bound1, o.msPerSubstep[1] / boundN,
+                b.available ? b.msPerSubstep : NAN, b.available ? b.meanStretch : NAN,
+                b.available ? b.worstStretch : NAN, b.available ? b.msPerSubstep / o.msPerSubstep[0] : NAN,
+                b.available ? b.msPerSubstep / o.msPerSubstep[1] : NAN, bw1.triad, bwN.triad);
+        std::printf("  %5d %10.4f %10.4f %9.4f %9.4f %10.4f %10.4f %10.4f %9.4f %9.1f %8.1f %8.1f\n", n,
+                    o.msPerSubstep[0], o.msPerSubstep[1], o.meanStretch, o.worstStretch, bound1,
+                    b.available ? b.msPerSubstep : NAN, b.available ? b.meanStretch : NAN,
+                    b.available ? b.worstStretch : NAN,
                     b.available ? b.msPerSubstep / o.msPerSubstep[0] : NAN,
                     b.available ? b.msPerSubstep / o.msPerSubstep[1] : NAN, o.msPerSubstep[0] / bound1);
         std::fflush(stdout);
         s1.points.emplace_back(n, o.msPerSubstep[0]);
         sN.points.emplace_back(n, o.msPerSubstep[1]);
         sbound.points.emplace_back(n, bound1);
-        if (b.available) sb.points.emplace_back(n, b.msPerSubstep);
+        if (b.available)
+            sb.points.emplace_back(n, b.msPerSubstep);
     }
     std::printf("  (%s)\n", bulletNote.c_str());
     plot.series = {s1, sN, sb, sbound};

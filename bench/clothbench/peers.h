@@ -6,10 +6,10 @@ namespace clothtear::bench {
 
 struct PeerResult {
     bool available = false;
-    std::string note;           // why not available, or the version
-    double msPerSubstep = 0;    // fastest of the repetitions
-    double meanStretch = 0;     // mean (len - rest) / rest over the links, at rest
-    double worstStretch = 0;    // largest (len - rest) / rest
+    std::string note;        // why not available, or the version
+    double msPerSubstep = 0; // fastest of the repetitions
+    double meanStretch = 0;  // mean (len - rest) / rest over the links, at rest
+    double worstStretch = 0; // largest (len - rest) / rest
     size_t links = 0;
 };
 

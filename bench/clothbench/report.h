@@ -11,7 +11,7 @@ namespace clothtear::bench {
 
 // A CSV file with a header row; values are written with full precision.
 class Csv {
-public:
+  public:
     Csv(const std::string& path, const std::vector<std::string>& header);
     bool ok() const { return bool(out_); }
     template <class... T> void row(const T&... values) {
@@ -23,7 +23,7 @@ public:
         out_.flush();
     }
 
-private:
+  private:
     std::ofstream out_;
 };
 

@@ -41,7 +41,8 @@ World testWorld(const char* integrator, double dt, double stiffness, double dens
     Rng rng(7);
     for (Index p = 0; p < w.cloth.particleCount(); ++p)
         if (!w.cloth.pinned(p))
-            w.cloth.v[p] = 0.01f * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+            w.cloth.v[p] =
+                0.01f * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
     return w;
 }
 
@@ -51,17 +52,21 @@ bool stable(const char* integrator, double dt, double stiffness, double density)
     const int frames = int(std::ceil(1.0 / dt));
     for (int f = 0; f < frames; ++f) {
         w.step();
-        if (!w.finite || w.maxStrain > 10.f) return false;
+        if (!w.finite || w.maxStrain > 10.f)
+            return false;
         if (f % 16 == 0 || f == frames - 1)
-            if (!(w.kineticEnergy() + springEnergy(w) <= 10 * scale)) return false;
+            if (!(w.kineticEnergy() + springEnergy(w) <= 10 * scale))
+                return false;
     }
     return true;
 }
 
 double largestStable(const char* integrator, double stiffness, double density) {
-    if (stable(integrator, kHi, stiffness, density)) return kHi;
+    if (stable(integrator, kHi, stiffness, density))
+        return kHi;
     double lo = kLo, hi = kHi;
-    if (!stable(integrator, lo, stiffness, density)) return 0;
+    if (!stable(integrator, lo, stiffness, density))
+        return 0;
     for (int i = 0; i < 12; ++i) {
         const double mid = std::sqrt(lo * hi);
         (stable(integrator, mid, stiffness, density) ? lo : hi) = mid;
@@ -73,19 +78,26 @@ double largestStable(const char* integrator, double stiffness, double density) {
 
 int runStability(const BenchOptions& opt) {
     setThreads(opt.threads);
-    const std::vector<double> stiffnesses = opt.quick ? std::vector<double>{10, 1000}
-                                                      : std::vector<double>{1, 10, 100, 1000, 1e4, 1e5};
-    const std::vector<double> densities = opt.quick ? std::vector<double>{0.2} : std::vector<double>{0.01, 0.1, 1, 10};
+    const std::vector<double> stiffnesses =
+        opt.quick ? std::vector<double>{10, 1000} : std::vector<double>{1, 10, 100, 1000, 1e4, 1e5};
+    const std::vector<double> densities =
+        opt.quick ? std::vector<double>{0.2} : std::vector<double>{0.01, 0.1, 1, 10};
     const char* integrators[] = {"semi-implicit-euler", "forward-euler", "verlet", "implicit-euler", "xpbd"};
-    Csv csv(opt.out + "/stability.csv", {"sweep", "integrator", "stiffness_N_per_m", "density_kg_per_m2",
-                                         "largest_stable_dt_s", "guard_estimate_s", "measured_over_estimate"});
-    std::printf("\n== stability (largest stable sub-step, 16x16 swing, guard and limit off; 0.05 = stable at the bound)\n");
+    Csv csv(opt.out + "/stability.csv",
+            {"sweep", "integrator", "stiffness_N_per_m", "density_kg_per_m2", "largest_stable_dt_s",
+             "guard_estimate_s", "measured_over_estimate"});
+    std::printf("\n== stability (largest stable sub-step, 16x16 swing, guard and limit off; 0.05 = stable at "
+                "the bound)\n");
     for (int sweep = 0; sweep < 2; ++sweep) {
         const std::vector<double>& values = sweep == 0 ? stiffnesses : densities;
         Plot plot{sweep == 0 ? "largest stable sub-step against stiffness (density 0.2 kg/m^2)"
                              : "largest stable sub-step against density (stiffness 60 N/m)",
                   sweep == 0 ? "material.stretch_stiffness (N/m)" : "material.density (kg/m^2)",
-                  "largest stable dt (s)", true, true, {}, {}};
+                  "largest stable dt (s)",
+                  true,
+                  true,
+                  {},
+                  {}};
         Series estimate{"guard estimate", {}, true, false};
         for (const char* integ : integrators) {
             Series s{integ, {}, false, false};
@@ -98,8 +110,10 @@ int runStability(const BenchOptions& opt) {
                 csv.row(sweep == 0 ? "stiffness" : "density", integ, S, rho, dt, est, dt / est);
                 std::printf(" %g:%.3g", v, dt);
                 std::fflush(stdout);
-                if (dt > 0) s.points.emplace_back(v, dt);
-                if (integ == integrators[0]) estimate.points.emplace_back(v, est);
+                if (dt > 0)
+                    s.points.emplace_back(v, dt);
+                if (integ == integrators[0])
+                    estimate.points.emplace_back(v, est);
             }
             std::printf("\n");
             plot.series.push_back(s);

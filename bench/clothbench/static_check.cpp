@@ -16,13 +16,15 @@ namespace {
 
 template <class V> double bottomCentreSag(const World& w, const std::vector<V>& x) {
     double bottom = 1e30;
-    for (const Vec3d& r : w.cloth.rest) bottom = std::min(bottom, r.y());
+    for (const Vec3d& r : w.cloth.rest)
+        bottom = std::min(bottom, r.y());
     const double spacing = w.settings.cloth.width / (w.settings.cloth.resolutionX - 1);
     double sum = 0, restSum = 0;
     int count = 0;
     for (Index p = 0; p < w.cloth.particleCount(); ++p) {
         const Vec3d& r = w.cloth.rest[p];
-        if (r.y() > bottom + 1e-9 || std::abs(r.x()) > 0.5 * spacing + 1e-9) continue;
+        if (r.y() > bottom + 1e-9 || std::abs(r.x()) > 0.5 * spacing + 1e-9)
+            continue;
         sum += double(x[p].y());
         restSum += r.y();
         ++count;
@@ -34,25 +36,33 @@ template <class V> double bottomCentreSag(const World& w, const std::vector<V>& 
 
 int runStatic(const BenchOptions& opt) {
     setThreads(opt.threads);
-    Csv csv(opt.out + "/static.csv", {"resolution", "model", "sag_m", "static_sag_m", "sag_vs_static", "rms_vs_static_m",
-                                      "newton_iterations", "newton_residual", "static_solve_s", "settle_s",
-                                      "substeps_per_frame", "max_strain"});
-    std::printf("\n== static accuracy (curtain 2 m, bottom-centre sag; static = Newton on the spring energy)\n");
+    Csv csv(opt.out + "/static.csv", {"resolution", "model", "sag_m", "static_sag_m", "sag_vs_static",
+                                      "rms_vs_static_m", "newton_iterations", "newton_residual",
+                                      "static_solve_s", "settle_s", "substeps_per_frame", "max_strain"});
+    std::printf(
+        "\n== static accuracy (curtain 2 m, bottom-centre sag; static = Newton on the spring energy)\n");
     std::vector<int> resolutions = opt.quick ? std::vector<int>{16, 32} : std::vector<int>{32, 64, 128};
     double firstStatic = 0;
     for (int res : resolutions) {
         const std::string r = std::to_string(res);
-        const std::vector<std::string> base = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "tear.enabled=false",
-                                               "collision.ground=false", "air.drag=2", "sleep.enabled=false"};
+        const std::vector<std::string> base = {"cloth.resolution_x=" + r,
+                                               "cloth.resolution_y=" + r,
+                                               "tear.enabled=false",
+                                               "collision.ground=false",
+                                               "air.drag=2",
+                                               "sleep.enabled=false"};
         World w0 = loadOrThrow("curtain", base);
         auto t0 = std::chrono::steady_clock::now();
         const StaticSolveResult st = solveStatic(w0.cloth, w0.settings, w0.cloth.x);
         const double solveSeconds = secondsSince(t0);
         const double staticSag = bottomCentreSag(w0, st.x);
-        if (firstStatic == 0) firstStatic = staticSag;
-        std::printf("  %3dx%-3d static sag %.6f m (%d Newton iterations, residual %.1e, %.2f s)%s\n", res, res, staticSag,
-                    st.iterations, st.residual, solveSeconds, st.converged ? "" : " NOT CONVERGED");
-        csv.row(res, "static", staticSag, staticSag, 1.0, 0.0, st.iterations, st.residual, solveSeconds, 0.0, 0, 0.0);
+        if (firstStatic == 0)
+            firstStatic = staticSag;
+        std::printf("  %3dx%-3d static sag %.6f m (%d Newton iterations, residual %.1e, %.2f s)%s\n", res,
+                    res, staticSag, st.iterations, st.residual, solveSeconds,
+                    st.converged ? "" : " NOT CONVERGED");
+        csv.row(res, "static", staticSag, staticSag, 1.0, 0.0, st.iterations, st.residual, solveSeconds, 0.0,
+                0, 0.0);
         struct Model {
             const char* name;
             std::vector<std::string> extra;
@@ -63,17 +73,21 @@ int runStatic(const BenchOptions& opt) {
             o.insert(o.end(), m.extra.begin(), m.extra.end());
             World w = loadOrThrow("curtain", o);
             t0 = std::chrono::steady_clock::now();
-            for (int f = 0; f < 5 * 60; ++f) w.step();
+            for (int f = 0; f < 5 * 60; ++f)
+                w.step();
             const double settle = secondsSince(t0);
             const double sag = bottomCentreSag(w, w.cloth.x);
             double sum = 0;
             for (Index p = 0; p < w.cloth.particleCount(); ++p)
                 sum += (w.cloth.x[p].cast<double>() - st.x[p]).squaredNorm();
             const double rms = std::sqrt(sum / double(w.cloth.particleCount()));
-            csv.row(res, m.name, sag, staticSag, sag / staticSag, rms, 0, 0.0, 0.0, settle, w.frameSubsteps, w.maxStrain);
-            std::printf("           %-8s settled sag %.6f m (%.4fx static, RMS from static %.2e m, %d sub-steps/frame, "
+            csv.row(res, m.name, sag, staticSag, sag / staticSag, rms, 0, 0.0, 0.0, settle, w.frameSubsteps,
+                    w.maxStrain);
+            std::printf("           %-8s settled sag %.6f m (%.4fx static, RMS from static %.2e m, %d "
+                        "sub-steps/frame, "
                         "max strain %.3f, %.1f s)%s\n",
-                        m.name, sag, sag / staticSag, rms, w.frameSubsteps, w.maxStrain, settle, w.finite ? "" : " NON-FINITE");
+                        m.name, sag, sag / staticSag, rms, w.frameSubsteps, w.maxStrain, settle,
+                        w.finite ? "" : " NON-FINITE");
         }
         std::printf("           static sag vs %dx%d: %+.3f%%\n", resolutions[0], resolutions[0],
                     100.0 * (staticSag / firstStatic - 1.0));

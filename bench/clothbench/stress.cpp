@@ -28,10 +28,13 @@ template <class T> size_t bytesOf(const std::vector<T>& v, bool capacity) {
 }
 
 size_t clothBytes(const Cloth& c, bool capacity = true) {
-    size_t b = bytesOf(c.x, capacity) + bytesOf(c.v, capacity) + bytesOf(c.xPrev, capacity) + bytesOf(c.invMass, capacity) + bytesOf(c.areaShare, capacity) +
-               bytesOf(c.rest, capacity) + bytesOf(c.flags, capacity) + bytesOf(c.particleTris, capacity) + bytesOf(c.springs, capacity) + bytesOf(c.springTopo, capacity) +
-               bytesOf(c.bends, capacity) + bytesOf(c.bendEdge, capacity) + bytesOf(c.triangles, capacity);
-    for (const auto& t : c.particleTris) b += bytesOf(t, capacity);
+    size_t b = bytesOf(c.x, capacity) + bytesOf(c.v, capacity) + bytesOf(c.xPrev, capacity) +
+               bytesOf(c.invMass, capacity) + bytesOf(c.areaShare, capacity) + bytesOf(c.rest, capacity) +
+               bytesOf(c.flags, capacity) + bytesOf(c.particleTris, capacity) + bytesOf(c.springs, capacity) +
+               bytesOf(c.springTopo, capacity) + bytesOf(c.bends, capacity) + bytesOf(c.bendEdge, capacity) +
+               bytesOf(c.triangles, capacity);
+    for (const auto& t : c.particleTris)
+        b += bytesOf(t, capacity);
     return b;
 }
 
@@ -40,17 +43,21 @@ size_t clothBytes(const Cloth& c, bool capacity = true) {
 int runStress(const BenchOptions& opt) {
     setThreads(opt.threads);
     const std::string r = std::to_string(opt.stressResolution);
-    World w = loadOrThrow("pull", {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "collision.ground=true"});
+    World w =
+        loadOrThrow("pull", {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "collision.ground=true"});
     w.drivers.clear(); // the pull scene's driver: the script does the pulling
-    for (Index p = 0; p < w.cloth.particleCount(); ++p) w.cloth.setPinned(p, false);
+    for (Index p = 0; p < w.cloth.particleCount(); ++p)
+        w.cloth.setPinned(p, false);
     w.pinByMode(PinMode::TopEdge);
     Rng rng(opt.seed);
     const double seconds = opt.quick ? std::min(opt.stressSeconds, 10.0) : opt.stressSeconds;
     const int frames = int(seconds * 60);
-    Csv csv(opt.out + "/stress.csv", {"t", "particles", "springs", "bends", "triangles", "tears", "balls", "cloth_bytes",
-                                      "cloth_bytes_used", "rss_bytes", "max_strain", "valid", "wall_s"});
-    std::printf("\n== stress (%dx%d tearing cloth, seed %llu, %.0f simulated s, %d thread(s))\n", opt.stressResolution,
-                opt.stressResolution, (unsigned long long)opt.seed, seconds, opt.threads);
+    Csv csv(opt.out + "/stress.csv",
+            {"t", "particles", "springs", "bends", "triangles", "tears", "balls", "cloth_bytes",
+             "cloth_bytes_used", "rss_bytes", "max_strain", "valid", "wall_s"});
+    std::printf("\n== stress (%dx%d tearing cloth, seed %llu, %.0f simulated s, %d thread(s))\n",
+                opt.stressResolution, opt.stressResolution, (unsigned long long)opt.seed, seconds,
+                opt.threads);
     const size_t p0 = w.cloth.particleCount(), s0 = w.cloth.springs.size(), t0n = w.cloth.triangles.size();
     const size_t bytes0 = clothBytes(w.cloth), rss0 = residentBytes(), usedStart = clothBytes(w.cloth, false);
     int events[4] = {0, 0, 0, 0};
@@ -61,7 +68,8 @@ int runStress(const BenchOptions& opt) {
     for (int f = 0; f < frames && invalid.empty(); ++f) {
         if (w.time >= dragEnd && !w.drivers.empty()) {
             for (const Driver& d : w.drivers)
-                for (Index p : d.particles) w.cloth.setPinned(p, false);
+                for (Index p : d.particles)
+                    w.cloth.setPinned(p, false);
             w.drivers.clear();
         }
         if (w.time >= nextEvent) {
@@ -74,17 +82,20 @@ int runStress(const BenchOptions& opt) {
                 Ball b;
                 b.radius = float(rng.uniform(0.1, 0.8));
                 b.mass = float(rng.uniform(0.5, 20));
-                const Vec3 from = aim + Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-0.5, 1)), 2.f + b.radius);
+                const Vec3 from =
+                    aim + Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-0.5, 1)), 2.f + b.radius);
                 b.x = from;
                 b.v = (aim - from).normalized() * float(rng.uniform(2, 15));
                 w.balls.push_back(b);
             } else if (kind == 1 && w.drivers.empty() && !w.cloth.pinned(target)) {
                 w.cloth.setPinned(target, true);
-                const Vec3 dir(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+                const Vec3 dir(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)),
+                               float(rng.uniform(-1, 1)));
                 w.drivers.push_back(Driver{{target}, dir.normalized() * float(rng.uniform(0.5, 4))});
                 dragEnd = w.time + rng.uniform(0.3, 2);
             } else if (kind == 2) {
-                const Vec3 dir(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+                const Vec3 dir(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)),
+                               float(rng.uniform(-1, 1)));
                 w.applyImpulse(aim, float(rng.uniform(0.1, 0.6)), dir, float(rng.uniform(1, 6)));
             } else {
                 w.settings.wind.enabled = !w.settings.wind.enabled;
@@ -93,42 +104,52 @@ int runStress(const BenchOptions& opt) {
                 w.settings.wind.dirZ = float(rng.uniform(-1, 1));
             }
         }
-        std::erase_if(w.balls, [&](const Ball& b) { return b.x.y() < w.settings.collision.groundHeight + b.radius + 0.01f &&
-                                                            b.v.squaredNorm() < 0.01f; });
+        std::erase_if(w.balls, [&](const Ball& b) {
+            return b.x.y() < w.settings.collision.groundHeight + b.radius + 0.01f &&
+                   b.v.squaredNorm() < 0.01f;
+        });
         w.step();
-        if (!w.finite) invalid = "non-finite: " + w.nonFiniteWhere;
+        if (!w.finite)
+            invalid = "non-finite: " + w.nonFiniteWhere;
         if (f % 60 == 59 || f == frames - 1 || !invalid.empty()) {
-            if (invalid.empty()) invalid = validateCloth(w.cloth);
-            if (invalid.empty()) invalid = w.tearLog.validationError;
+            if (invalid.empty())
+                invalid = validateCloth(w.cloth);
+            if (invalid.empty())
+                invalid = w.tearLog.validationError;
             const size_t bytes = clothBytes(w.cloth), rss = residentBytes();
             rssPeak = std::max(rssPeak, rss);
             bytesPeak = std::max(bytesPeak, bytes);
-            csv.row(w.time, w.cloth.particleCount(), w.cloth.springs.size(), w.cloth.bends.size(), w.cloth.triangles.size(),
-                    w.tearLog.total(), w.balls.size(), bytes, clothBytes(w.cloth, false), rss, w.maxStrain, int(invalid.empty()), secondsSince(start));
+            csv.row(w.time, w.cloth.particleCount(), w.cloth.springs.size(), w.cloth.bends.size(),
+                    w.cloth.triangles.size(), w.tearLog.total(), w.balls.size(), bytes,
+                    clothBytes(w.cloth, false), rss, w.maxStrain, int(invalid.empty()), secondsSince(start));
             if (f % 600 == 599)
-                std::printf("  t %6.1f s: %zu particles, %zu triangles, %llu tears, cloth %.1f MB, resident %.1f MB, "
-                            "%.0f s wall\n",
-                            w.time, w.cloth.particleCount(), w.cloth.triangles.size(),
-                            (unsigned long long)w.tearLog.total(), bytes / 1e6, rss / 1e6, secondsSince(start));
+                std::printf(
+                    "  t %6.1f s: %zu particles, %zu triangles, %llu tears, cloth %.1f MB, resident %.1f MB, "
+                    "%.0f s wall\n",
+                    w.time, w.cloth.particleCount(), w.cloth.triangles.size(),
+                    (unsigned long long)w.tearLog.total(), bytes / 1e6, rss / 1e6, secondsSince(start));
         }
     }
     const size_t p1 = w.cloth.particleCount(), s1 = w.cloth.springs.size(), t1 = w.cloth.triangles.size();
     const size_t bytes1 = clothBytes(w.cloth), rss1 = residentBytes();
     const size_t used0 = usedStart, used1 = clothBytes(w.cloth, false);
-    std::printf("  events: %d balls, %d drags, %d impulses, %d wind switches; %llu tears\n", events[0], events[1], events[2],
-                events[3], (unsigned long long)w.tearLog.total());
-    std::printf("  topology: particles %zu -> %zu (+%.1f%%), springs %zu -> %zu, triangles %zu -> %zu (+%.1f%%)\n", p0, p1,
-                100.0 * (double(p1) / p0 - 1), s0, s1, t0n, t1, 100.0 * (double(t1) / t0n - 1));
-    std::printf("  cloth arrays: %.2f -> %.2f MB (+%.1f%%, peak %.2f); resident: %.1f -> %.1f MB (peak %.1f); "
-                "bytes per particle %.0f -> %.0f\n",
-                bytes0 / 1e6, bytes1 / 1e6, 100.0 * (double(bytes1) / bytes0 - 1), bytesPeak / 1e6, rss0 / 1e6, rss1 / 1e6,
-                rssPeak / 1e6, double(bytes0) / p0, double(bytes1) / p1);
-    std::printf("  cloth arrays in use: %.2f -> %.2f MB; per particle %.1f -> %.1f B, per (particle + spring + triangle) "
+    std::printf("  events: %d balls, %d drags, %d impulses, %d wind switches; %llu tears\n", events[0],
+                events[1], events[2], events[3], (unsigned long long)w.tearLog.total());
+    std::printf(
+        "  topology: particles %zu -> %zu (+%.1f%%), springs %zu -> %zu, triangles %zu -> %zu (+%.1f%%)\n",
+        p0, p1, 100.0 * (double(p1) / p0 - 1), s0, s1, t0n, t1, 100.0 * (double(t1) / t0n - 1));
+    std::printf(
+        "  cloth arrays: %.2f -> %.2f MB (+%.1f%%, peak %.2f); resident: %.1f -> %.1f MB (peak %.1f); "
+        "bytes per particle %.0f -> %.0f\n",
+        bytes0 / 1e6, bytes1 / 1e6, 100.0 * (double(bytes1) / bytes0 - 1), bytesPeak / 1e6, rss0 / 1e6,
+        rss1 / 1e6, rssPeak / 1e6, double(bytes0) / p0, double(bytes1) / p1);
+    std::printf("  cloth arrays in use: %.2f -> %.2f MB; per particle %.1f -> %.1f B, per (particle + spring "
+                "+ triangle) "
                 "%.1f -> %.1f B\n",
-                used0 / 1e6, used1 / 1e6, double(used0) / p0, double(used1) / p1, double(used0) / double(p0 + s0 + t0n),
-                double(used1) / double(p1 + s1 + t1));
-    std::printf("  invariants: %s; %.0f s wall for %.0f simulated s\n", invalid.empty() ? "held at every check" : invalid.c_str(),
-                secondsSince(start), w.time);
+                used0 / 1e6, used1 / 1e6, double(used0) / p0, double(used1) / p1,
+                double(used0) / double(p0 + s0 + t0n), double(used1) / double(p1 + s1 + t1));
+    std::printf("  invariants: %s; %.0f s wall for %.0f simulated s\n",
+                invalid.empty() ? "held at every check" : invalid.c_str(), secondsSince(start), w.time);
     return invalid.empty() ? 0 : 1;
 }
 

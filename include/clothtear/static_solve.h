@@ -18,16 +18,16 @@
 namespace clothtear {
 
 struct StaticSolveOptions {
-    int maxIterations = 100;    // Newton iterations
-    double tolerance = 1e-9;    // stop when |grad E| (free particles) <= tolerance * total weight (N)
+    int maxIterations = 100; // Newton iterations
+    double tolerance = 1e-9; // stop when |grad E| (free particles) <= tolerance * total weight (N)
 };
 
 struct StaticSolveResult {
-    std::vector<Vec3d> x;       // m, equilibrium positions (pinned particles unchanged)
+    std::vector<Vec3d> x; // m, equilibrium positions (pinned particles unchanged)
     int iterations = 0;
-    double residual = 0;        // |grad E| / total weight at the end
+    double residual = 0; // |grad E| / total weight at the end
     bool converged = false;
-    std::string error;          // "" or why it failed (factorization)
+    std::string error; // "" or why it failed (factorization)
 };
 
 // Starts from `start` (usually cloth.x). Uses material stiffnesses and gravity from `settings`.

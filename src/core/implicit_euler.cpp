@@ -28,7 +28,8 @@ uint64_t cacheKey(const Cloth& c) {
                        uint64_t(uintptr_t(c.bends.data())), uint64_t(c.bends.size())})
         h = mix(h, w);
     for (Index p = 0; p < c.particleCount(); ++p)
-        if (c.invMass[p] == 0.f) h = mix(h, p);
+        if (c.invMass[p] == 0.f)
+            h = mix(h, p);
     return h;
 }
 
@@ -42,32 +43,38 @@ int slotOf(const Eigen::SparseMatrix<double, Eigen::RowMajor>& A, int r, int col
 }
 
 void buildPattern(const Cloth& cloth, std::span<const SpringKind> kinds, ImplicitEulerCache& C,
-                         Eigen::SparseMatrix<double, Eigen::RowMajor>& A) {
+                  Eigen::SparseMatrix<double, Eigen::RowMajor>& A) {
     const size_t n = cloth.particleCount();
     C.row.assign(n, -1);
     int unknowns = 0;
     for (Index p = 0; p < n; ++p)
-        if (cloth.invMass[p] > 0.f) C.row[p] = unknowns, unknowns += 3;
+        if (cloth.invMass[p] > 0.f)
+            C.row[p] = unknowns, unknowns += 3;
     std::vector<Eigen::Triplet<double>> triplets;
     auto block = [&](int r, int c) {
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) triplets.emplace_back(r + i, c + j, 0.0);
+            for (int j = 0; j < 3; ++j)
+                triplets.emplace_back(r + i, c + j, 0.0);
     };
     for (Index p = 0; p < n; ++p)
-        if (C.row[p] >= 0) block(C.row[p], C.row[p]);
+        if (C.row[p] >= 0)
+            block(C.row[p], C.row[p]);
     for (const SpringKind& kind : kinds)
         for (const Spring& s : kind.springs) {
             const int ra = C.row[s.a], rb = C.row[s.b];
-            if (ra >= 0 && rb >= 0) block(ra, rb), block(rb, ra);
+            if (ra >= 0 && rb >= 0)
+                block(ra, rb), block(rb, ra);
         }
     A.resize(unknowns, unknowns);
     A.setFromTriplets(triplets.begin(), triplets.end());
     A.makeCompressed();
     auto slots = [&](int r, int c, int* out) {
-        for (int i = 0; i < 3; ++i) out[i] = (r >= 0 && c >= 0) ? slotOf(A, r + i, c) : -1;
+        for (int i = 0; i < 3; ++i)
+            out[i] = (r >= 0 && c >= 0) ? slotOf(A, r + i, c) : -1;
     };
     C.diagSlots.assign(n, {-1, -1, -1});
-    for (Index p = 0; p < n; ++p) slots(C.row[p], C.row[p], C.diagSlots[p].data());
+    for (Index p = 0; p < n; ++p)
+        slots(C.row[p], C.row[p], C.diagSlots[p].data());
     C.springSlots.clear();
     for (const SpringKind& kind : kinds)
         for (const Spring& s : kind.springs) {
@@ -104,13 +111,16 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
     std::vector<V3>& f = C.force;
     f.assign(n, V3::Zero());
     for (Index p = 0; p < n; ++p) {
-        if (C.row[p] < 0) continue;
+        if (C.row[p] < 0)
+            continue;
         const double m = 1.0 / cloth.invMass[p];
         const V3 v = cloth.v[p].cast<double>();
         f[p] = m * (in.gravity.cast<double>() - double(in.dragPerMass) * v);
-        if (!in.force.empty()) f[p] += in.force[p].cast<double>();
+        if (!in.force.empty())
+            f[p] += in.force[p].cast<double>();
         const double d = m * (1.0 + dt * in.dragPerMass);
-        for (int i = 0; i < 3; ++i) val[C.diagSlots[p][i] + i] += d;
+        for (int i = 0; i < 3; ++i)
+            val[C.diagSlots[p][i] + i] += d;
     }
 
     // Springs: forces, and the blocks dt D + dt^2 K (as positive matrices H = -K, B = -D).
@@ -119,10 +129,12 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
         for (const Spring& s : kind.springs) {
             const std::array<int, 12>& o = C.springSlots[si++];
             const double k = double(kind.stiffness) * s.weight, kd = double(kind.damping) * s.weight;
-            if (k == 0.0 && kd == 0.0) continue;
+            if (k == 0.0 && kd == 0.0)
+                continue;
             const V3 d = (cloth.x[s.b] - cloth.x[s.a]).cast<double>();
             const double l = d.norm();
-            if (!(l > 1e-12)) continue;
+            if (!(l > 1e-12))
+                continue;
             const V3 nrm = d / l;
             const V3 vab = (cloth.v[s.b] - cloth.v[s.a]).cast<double>();
             const V3 fa = (k * (l - s.rest) + kd * vab.dot(nrm)) * nrm;
@@ -134,17 +146,22 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
             const Mat3 B = dt * kd * nn + dt * dt * H;
             // dt^2 K v on each end: -dt^2 H (v_a - v_b) for a, the opposite for b.
             const V3 hv = dt * dt * (H * vab); // = -dt^2 H (v_a - v_b)
-            if (C.row[s.a] >= 0) C.b.segment<3>(C.row[s.a]) += hv;
-            if (C.row[s.b] >= 0) C.b.segment<3>(C.row[s.b]) -= hv;
+            if (C.row[s.a] >= 0)
+                C.b.segment<3>(C.row[s.a]) += hv;
+            if (C.row[s.b] >= 0)
+                C.b.segment<3>(C.row[s.b]) -= hv;
             for (int blk = 0; blk < 4; ++blk) {
-                if (o[3 * blk] < 0) continue;
+                if (o[3 * blk] < 0)
+                    continue;
                 const double sign = (blk == 0 || blk == 3) ? 1.0 : -1.0;
                 for (int i = 0; i < 3; ++i)
-                    for (int j = 0; j < 3; ++j) val[o[3 * blk + i] + j] += sign * B(i, j);
+                    for (int j = 0; j < 3; ++j)
+                        val[o[3 * blk + i] + j] += sign * B(i, j);
             }
         }
     for (Index p = 0; p < n; ++p)
-        if (C.row[p] >= 0) C.b.segment<3>(C.row[p]) += dt * f[p];
+        if (C.row[p] >= 0)
+            C.b.segment<3>(C.row[p]) += dt * f[p];
 
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::Lower | Eigen::Upper,
                              Eigen::DiagonalPreconditioner<double>>
@@ -152,14 +169,16 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
     cg.setTolerance(options.tolerance);
     cg.setMaxIterations(options.maxIterations);
     cg.compute(A);
-    if (C.dv.size() != unknowns) C.dv.setZero(unknowns);
+    if (C.dv.size() != unknowns)
+        C.dv.setZero(unknowns);
     C.dv = cg.solveWithGuess(C.b, C.dv); // last step's dv is a good first guess
     C.lastIterations = int(cg.iterations());
     C.lastError = cg.error();
 
     for (Index p = 0; p < n; ++p) {
         cloth.xPrev[p] = cloth.x[p];
-        if (C.row[p] < 0) continue;
+        if (C.row[p] < 0)
+            continue;
         const V3 v = (cloth.v[p].cast<double>() + C.dv.segment<3>(C.row[p])) * double(in.keep);
         cloth.v[p] = v.cast<float>();
         cloth.x[p] = (cloth.x[p].cast<double>() + dt * v).cast<float>();
@@ -170,7 +189,8 @@ ImplicitCacheHolder::ImplicitCacheHolder() = default;
 ImplicitCacheHolder::~ImplicitCacheHolder() = default;
 ImplicitCacheHolder::ImplicitCacheHolder(const ImplicitCacheHolder&) {}
 ImplicitCacheHolder& ImplicitCacheHolder::operator=(const ImplicitCacheHolder& other) {
-    if (this != &other) cache.reset();
+    if (this != &other)
+        cache.reset();
     return *this;
 }
 ImplicitCacheHolder::ImplicitCacheHolder(ImplicitCacheHolder&&) noexcept = default;

@@ -28,16 +28,17 @@ namespace clothtear {
 // Sparsity pattern and work arrays, rebuilt when the topology or the pinned set changes.
 struct ImplicitEulerCache {
     uint64_t key = ~uint64_t(0);
-    std::vector<int> row;                 // per particle: first unknown (3 per free particle), -1 if pinned
-    Eigen::SparseMatrix<double, Eigen::RowMajor> A; // 3 nf x 3 nf (nf free particles), symmetric, full storage
+    std::vector<int> row; // per particle: first unknown (3 per free particle), -1 if pinned
+    Eigen::SparseMatrix<double, Eigen::RowMajor>
+        A; // 3 nf x 3 nf (nf free particles), symmetric, full storage
     // Per spring (both kinds in order): offsets into A.valuePtr() of the first entry of each of the
     // three columns of the blocks (a, a), (a, b), (b, a), (b, b); -1 where an end is pinned.
     std::vector<std::array<int, 12>> springSlots;
     std::vector<std::array<int, 3>> diagSlots; // per particle: its diagonal block's columns
     Eigen::VectorXd b, dv;
     std::vector<Eigen::Vector3d> force; // N per particle at the start of the step
-    int lastIterations = 0;    // CG iterations of the last solve
-    double lastError = 0;      // CG relative residual of the last solve
+    int lastIterations = 0;             // CG iterations of the last solve
+    double lastError = 0;               // CG relative residual of the last solve
 };
 
 struct ImplicitEulerOptions {

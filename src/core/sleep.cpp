@@ -4,8 +4,8 @@
 // for sleep.delay seconds, with nothing that moves it by itself (no drivers, no wind). Waking: a
 // ball whose reach over the next frame (radius, thickness, the distance it travels) overlaps the
 // box the cloth had when it fell asleep; a driver; wind; any change of a parameter, of the topology
-// or of the pinned particles; World::wake() (impulses and the app's tools call it). Asleep, a frame only advances
-// the clock: the state stays exactly as it was, so waking continues from there.
+// or of the pinned particles; World::wake() (impulses and the app's tools call it). Asleep, a frame only
+// advances the clock: the state stays exactly as it was, so waking continues from there.
 #include "clothtear/params.h"
 #include "clothtear/world.h"
 
@@ -18,7 +18,8 @@ namespace {
 uint64_t pinHash(const Cloth& c) {
     uint64_t h = c.particleCount();
     for (Index p = 0; p < c.particleCount(); ++p)
-        if (c.flags[p] & kPinned) h = (h ^ p) * 0x100000001b3ull;
+        if (c.flags[p] & kPinned)
+            h = (h ^ p) * 0x100000001b3ull;
     return h;
 }
 
@@ -41,8 +42,10 @@ void World::wake() {
 }
 
 bool World::stayAsleep() {
-    if (!asleep) return false;
-    const bool windBlows = settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f;
+    if (!asleep)
+        return false;
+    const bool windBlows =
+        settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f;
     bool touched = !settings.sleep.enabled || !drivers.empty() || windBlows ||
                    cloth.topologyRevision != sleepTopology_ || settingsHash(settings) != sleepSettingsHash_ ||
                    pinHash(cloth) != sleepPins_;
@@ -50,24 +53,32 @@ bool World::stayAsleep() {
     for (const Ball& b : balls) {
         // Where the ball can be by the end of the frame (gravity included), grown by its radius.
         const float T = settings.time.frameDt;
-        const float reach = b.radius + settings.collision.thickness + b.v.norm() * T + 0.5f * g.norm() * T * T;
-        touched |= !((b.x.array() + reach < sleepLo_.array()).any() || (b.x.array() - reach > sleepHi_.array()).any());
+        const float reach =
+            b.radius + settings.collision.thickness + b.v.norm() * T + 0.5f * g.norm() * T * T;
+        touched |= !((b.x.array() + reach < sleepLo_.array()).any() ||
+                     (b.x.array() - reach > sleepHi_.array()).any());
     }
-    if (touched) wake();
+    if (touched)
+        wake();
     return asleep;
 }
 
 void World::updateSleep() {
-    const bool windBlows = settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f;
-    if (!settings.sleep.enabled || !finite || !drivers.empty() || windBlows || !(maxSpeed < settings.sleep.speed)) {
+    const bool windBlows =
+        settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f;
+    if (!settings.sleep.enabled || !finite || !drivers.empty() || windBlows ||
+        !(maxSpeed < settings.sleep.speed)) {
         restSince_ = -1;
         return;
     }
-    if (restSince_ < 0) restSince_ = time;
-    if (time - restSince_ + 1e-9 < settings.sleep.delay) return;
+    if (restSince_ < 0)
+        restSince_ = time;
+    if (time - restSince_ + 1e-9 < settings.sleep.delay)
+        return;
     sleepLo_ = Vec3::Constant(1e30f);
     sleepHi_ = Vec3::Constant(-1e30f);
-    for (const Vec3& x : cloth.x) sleepLo_ = sleepLo_.cwiseMin(x), sleepHi_ = sleepHi_.cwiseMax(x);
+    for (const Vec3& x : cloth.x)
+        sleepLo_ = sleepLo_.cwiseMin(x), sleepHi_ = sleepHi_.cwiseMax(x);
     sleepSettingsHash_ = settingsHash(settings);
     sleepTopology_ = cloth.topologyRevision;
     sleepPins_ = pinHash(cloth);

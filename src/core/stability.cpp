@@ -18,7 +18,8 @@
 namespace clothtear {
 
 double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
-    if (!isExplicit(settings.time.integrator)) return std::numeric_limits<double>::infinity();
+    if (!isExplicit(settings.time.integrator))
+        return std::numeric_limits<double>::infinity();
     const size_t n = cloth.particleCount();
     std::vector<double> k(n, 0.0), kd(n, 0.0);
     const MaterialSettings& m = settings.material;
@@ -34,10 +35,13 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
     double best = std::numeric_limits<double>::infinity();
     for (Index p = 0; p < n; ++p) {
         const double w = cloth.invMass[p];
-        if (w == 0.0) continue;
+        if (w == 0.0)
+            continue;
         const double A = k[p] * w, B = kd[p] * w;
-        if (A > 0) best = std::min(best, (std::sqrt(B * B + 2 * A) - B) / A);
-        else if (B > 0) best = std::min(best, 1.0 / B);
+        if (A > 0)
+            best = std::min(best, (std::sqrt(B * B + 2 * A) - B) / A);
+        else if (B > 0)
+            best = std::min(best, 1.0 / B);
     }
     return best;
 }

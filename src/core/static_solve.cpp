@@ -22,7 +22,7 @@ struct Model {
     const Cloth& cloth;
     std::vector<int> row; // first unknown of each free particle, -1 if pinned
     V3 g;
-    double ks[2];         // stiffness per unit weight: structural, bend-shear
+    double ks[2]; // stiffness per unit weight: structural, bend-shear
 
     const std::vector<Spring>& springs(int kind) const { return kind == 0 ? cloth.springs : cloth.bends; }
 
@@ -33,7 +33,8 @@ struct Model {
                 const double ext = (x[s.b] - x[s.a]).norm() - s.rest;
                 e += 0.5 * ks[kind] * s.weight * ext * ext;
             }
-        for (Index p = 0; p < cloth.particleCount(); ++p) e -= cloth.particleMass(p) * g.dot(x[p]);
+        for (Index p = 0; p < cloth.particleCount(); ++p)
+            e -= cloth.particleMass(p) * g.dot(x[p]);
         return e;
     }
 
@@ -44,41 +45,54 @@ struct Model {
             for (const Spring& s : springs(kind)) {
                 const V3 d = x[s.b] - x[s.a];
                 const double l = d.norm();
-                if (!(l > 0)) continue;
+                if (!(l > 0))
+                    continue;
                 const V3 f = ks[kind] * s.weight * (l - s.rest) / l * d; // pull on a towards b
-                if (row[s.a] >= 0) grad.segment<3>(row[s.a]) -= f;
-                if (row[s.b] >= 0) grad.segment<3>(row[s.b]) += f;
+                if (row[s.a] >= 0)
+                    grad.segment<3>(row[s.a]) -= f;
+                if (row[s.b] >= 0)
+                    grad.segment<3>(row[s.b]) += f;
             }
         for (Index p = 0; p < cloth.particleCount(); ++p)
-            if (row[p] >= 0) grad.segment<3>(row[p]) -= cloth.particleMass(p) * g;
+            if (row[p] >= 0)
+                grad.segment<3>(row[p]) -= cloth.particleMass(p) * g;
         return grad;
     }
 
-    Eigen::SparseMatrix<double> hessian(const std::vector<V3>& x, int unknowns, bool clamp, double shift) const {
+    Eigen::SparseMatrix<double> hessian(const std::vector<V3>& x, int unknowns, bool clamp,
+                                        double shift) const {
         std::vector<Eigen::Triplet<double>> t;
         t.reserve(36 * (cloth.springs.size() + cloth.bends.size()) + 3 * size_t(unknowns));
         auto block = [&](int r, int c, const Mat3& B) {
             for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) t.emplace_back(r + i, c + j, B(i, j));
+                for (int j = 0; j < 3; ++j)
+                    t.emplace_back(r + i, c + j, B(i, j));
         };
         for (int kind = 0; kind < 2; ++kind)
             for (const Spring& s : springs(kind)) {
                 const double k = ks[kind] * s.weight;
-                if (k == 0) continue;
+                if (k == 0)
+                    continue;
                 const V3 d = x[s.b] - x[s.a];
                 const double l = d.norm();
-                if (!(l > 0)) continue;
+                if (!(l > 0))
+                    continue;
                 const V3 n = d / l;
                 const Mat3 nn = n * n.transpose();
                 double geo = 1.0 - s.rest / l;
-                if (clamp) geo = std::max(0.0, geo);
+                if (clamp)
+                    geo = std::max(0.0, geo);
                 const Mat3 B = k * (nn + geo * (Mat3::Identity() - nn));
                 const int ra = row[s.a], rb = row[s.b];
-                if (ra >= 0) block(ra, ra, B);
-                if (rb >= 0) block(rb, rb, B);
-                if (ra >= 0 && rb >= 0) block(ra, rb, -B), block(rb, ra, -B);
+                if (ra >= 0)
+                    block(ra, ra, B);
+                if (rb >= 0)
+                    block(rb, rb, B);
+                if (ra >= 0 && rb >= 0)
+                    block(ra, rb, -B), block(rb, ra, -B);
             }
-        for (int i = 0; i < unknowns; ++i) t.emplace_back(i, i, shift);
+        for (int i = 0; i < unknowns; ++i)
+            t.emplace_back(i, i, shift);
         Eigen::SparseMatrix<double> H(unknowns, unknowns);
         H.setFromTriplets(t.begin(), t.end());
         return H;
@@ -91,22 +105,27 @@ StaticSolveResult solveStatic(const Cloth& cloth, const Settings& settings, std:
                               const StaticSolveOptions& options) {
     StaticSolveResult r;
     const size_t n = cloth.particleCount();
-    Model M{cloth, std::vector<int>(n, -1), V3(settings.gravity.x, settings.gravity.y, settings.gravity.z),
+    Model M{cloth,
+            std::vector<int>(n, -1),
+            V3(settings.gravity.x, settings.gravity.y, settings.gravity.z),
             {settings.material.stretchStiffness, settings.material.bendStiffness}};
     int unknowns = 0;
     double weight = 0;
     for (Index p = 0; p < n; ++p) {
-        if (!cloth.pinned(p)) M.row[p] = unknowns, unknowns += 3;
+        if (!cloth.pinned(p))
+            M.row[p] = unknowns, unknowns += 3;
         weight += cloth.particleMass(p) * M.g.norm();
     }
     weight = std::max(weight, 1e-30);
     std::vector<V3> x(n);
-    for (Index p = 0; p < n; ++p) x[p] = start[p].cast<double>();
+    for (Index p = 0; p < n; ++p)
+        x[p] = start[p].cast<double>();
     // A tiny shift keeps directions no spring resists (a slack region) solvable; 1e-12 of the
     // stiffest spring changes nothing else.
     double kMax = 0;
     for (int kind = 0; kind < 2; ++kind)
-        for (const Spring& s : M.springs(kind)) kMax = std::max(kMax, M.ks[kind] * s.weight);
+        for (const Spring& s : M.springs(kind))
+            kMax = std::max(kMax, M.ks[kind] * s.weight);
     const double shift = 1e-12 * std::max(kMax, 1e-30);
 
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
@@ -127,11 +146,14 @@ StaticSolveResult solveStatic(const Cloth& cloth, const Settings& settings, std:
         Eigen::VectorXd dir;
         for (bool clamp : {false, true}) {
             const Eigen::SparseMatrix<double> H = M.hessian(x, unknowns, clamp, shift);
-            if (!analyzed) ldlt.analyzePattern(H), analyzed = true; // same pattern every iteration
+            if (!analyzed)
+                ldlt.analyzePattern(H), analyzed = true; // same pattern every iteration
             ldlt.factorize(H);
-            if (ldlt.info() != Eigen::Success) continue;
+            if (ldlt.info() != Eigen::Success)
+                continue;
             dir = -ldlt.solve(grad);
-            if (dir.allFinite() && grad.dot(dir) < 0) break;
+            if (dir.allFinite() && grad.dot(dir) < 0)
+                break;
             dir.resize(0);
         }
         if (dir.size() == 0) {

@@ -19,21 +19,25 @@ void xpbdStep(Cloth& cloth, const ReferenceStepInput& in, std::vector<Vec3>& dx)
             continue;
         }
         Vec3 a = in.gravity - in.dragPerMass * v[p];
-        if (!in.force.empty()) a += in.force[p] * w[p];
+        if (!in.force.empty())
+            a += in.force[p] * w[p];
         v[p] = (v[p] + a * dt) * in.keep;
         dx[p] = v[p] * dt;
     }
     // One constraint pass (Macklin et al. 2019: one iteration, many sub-steps) on the
     // displacements dx = x - x_n.
     for (const SpringKind& kind : in.kinds) {
-        if (kind.stiffness == 0.f && kind.damping == 0.f) continue;
+        if (kind.stiffness == 0.f && kind.damping == 0.f)
+            continue;
         for (const Spring& s : kind.springs) {
             const float wa = w[s.a], wb = w[s.b];
-            if (wa + wb == 0.f) continue;
+            if (wa + wb == 0.f)
+                continue;
             const Vec3 rel = dx[s.b] - dx[s.a];
             const Vec3 d = (x[s.b] - x[s.a]) + rel;
             const float l = d.norm();
-            if (!(l > 1e-12f)) continue;
+            if (!(l > 1e-12f))
+                continue;
             const Vec3 nrm = d / l;
             const float kdt2 = kind.stiffness * s.weight * dt * dt, kddt = kind.damping * s.weight * dt;
             // grad C . (x - x_n): how far the ends moved apart along n since the step began.
@@ -45,7 +49,8 @@ void xpbdStep(Cloth& cloth, const ReferenceStepInput& in, std::vector<Vec3>& dx)
     const float invDt = 1.f / dt;
     for (Index p = 0; p < n; ++p) {
         cloth.xPrev[p] = x[p];
-        if (w[p] == 0.f) continue;
+        if (w[p] == 0.f)
+            continue;
         v[p] = dx[p] * invDt;
         x[p] += dx[p];
     }

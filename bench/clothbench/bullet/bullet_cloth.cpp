@@ -22,25 +22,30 @@ PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int 
     auto dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
     auto broadphase = std::make_unique<btDbvtBroadphase>();
     auto solver = std::make_unique<btSequentialImpulseConstraintSolver>();
-    auto world = std::make_unique<btSoftRigidDynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(), config.get());
+    auto world = std::make_unique<btSoftRigidDynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(),
+                                                            config.get());
     world->setGravity(btVector3(0, -9.81f, 0));
     btSoftBodyWorldInfo& info = world->getWorldInfo();
     info.m_gravity = btVector3(0, -9.81f, 0);
     info.m_sparsesdf.Initialize();
     // 2 m x 2 m in the x-y plane, top edge at y = 1 (as our curtain).
-    btSoftBody* cloth = btSoftBodyHelpers::CreatePatch(info, btVector3(-1, 1, 0), btVector3(1, 1, 0), btVector3(-1, -1, 0),
-                                                       btVector3(1, -1, 0), n, n, 0, true);
+    btSoftBody* cloth =
+        btSoftBodyHelpers::CreatePatch(info, btVector3(-1, 1, 0), btVector3(1, 1, 0), btVector3(-1, -1, 0),
+                                       btVector3(1, -1, 0), n, n, 0, true);
     cloth->setTotalMass(0.8f); // 0.2 kg/m^2 over 4 m^2, as ours
     for (int i = 0; i < cloth->m_nodes.size(); ++i)
-        if (cloth->m_nodes[i].m_x.y() > 1 - 1e-4f) cloth->setMass(i, 0); // top row fixed
+        if (cloth->m_nodes[i].m_x.y() > 1 - 1e-4f)
+            cloth->setMass(i, 0); // top row fixed
     cloth->randomizeConstraints();
     world->addSoftBody(cloth);
     const btScalar dt = 1.f / 600.f; // 10 sub-steps per 1/60 s frame
-    for (int i = 0; i < int(settleSeconds / dt); ++i) world->stepSimulation(dt, 0);
+    for (int i = 0; i < int(settleSeconds / dt); ++i)
+        world->stepSimulation(dt, 0);
     double best = 1e300;
     for (int rep = 0; rep < repetitions; ++rep) {
         const auto t0 = std::chrono::steady_clock::now();
-        for (int i = 0; i < measureSubsteps; ++i) world->stepSimulation(dt, 0);
+        for (int i = 0; i < measureSubsteps; ++i)
+            world->stepSimulation(dt, 0);
         const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         best = std::min(best, 1000.0 * s / measureSubsteps);
     }
