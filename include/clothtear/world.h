@@ -134,6 +134,7 @@ struct StepScratch {
     std::vector<Vec3> externalForce; // N per particle from the wind phase
     std::vector<Vec3> xpbdDx;         // XPBD: displacements within the sub-step
     ImplicitCacheHolder implicit;
+    std::vector<Vec3> frameStart; // positions at the start of the frame (sleep.cpp), with sleep on
 };
 
 // The stability guard's estimate of the largest stable sub-step of explicit integration for the
@@ -199,6 +200,7 @@ private:
     Vec3 sleepLo_ = Vec3::Zero(), sleepHi_ = Vec3::Zero(); // m, the cloth's box
     bool stayAsleep();  // asleep and nothing can touch the cloth this frame
     void updateSleep(); // after a frame: at rest long enough?
+    float frameSpeed() const; // m/s, largest displacement of a particle over the last frame / frameDt
     float ballEdgeBound() const; // m, bound on every triangle edge this sub-step (ball broad phase)
     double guardStep_ = 0; // s, cached stableStepEstimate()
     void phaseForces(float dt);

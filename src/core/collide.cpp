@@ -170,7 +170,7 @@ inline bool boxesOverlap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
 // edge of each of its corners, so a triangle overlapping the box has all its corners in the box
 // grown by maxEdge (a bound on every edge this sub-step). One pass over the particle positions
 // marks those (`inside`, scratch); each triangle is then listed once, from its lowest marked
-// corner. Where more than half of the cloth is marked, or without a bound (maxEdge infinite:
+// corner. Where more than an eighth of the cloth is marked, or without a bound (maxEdge infinite:
 // no limit and no tearing), every triangle's box is tested instead, which is then cheaper.
 std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, float maxEdge,
                                std::vector<uint8_t>& inside) {
@@ -187,7 +187,7 @@ std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& h
             marked += inside[p];
         }
     }
-    if (2 * marked > n) {
+    if (8 * marked > n) {
         for (Index ti = 0; ti < Index(cloth.triangles.size()); ++ti) {
             const Triangle& tri = cloth.triangles[ti];
             if (boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near.push_back(ti);

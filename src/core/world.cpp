@@ -159,6 +159,7 @@ void World::step() {
         ++sleptFrames;
         return;
     }
+    if (settings.sleep.enabled) scratch_.frameStart = cloth.x;
     frameSubsteps = guardSubsteps();
     substepsNow_ = frameSubsteps;
     for (int i = 0; i < frameSubsteps; ++i) substep();
