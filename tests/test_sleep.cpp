@@ -81,7 +81,8 @@ TEST(BroadPhase, SameResultAsTestingEveryTriangle) {
     auto run = [](bool broad) {
         World w;
         EXPECT_EQ(loadScene(w, "ball-r0.5-v3",
-                            std::vector<std::string>{"cloth.resolution_x=40", "cloth.resolution_y=40", "ball.radius=0.2"}),
+                            std::vector<std::string>{"cloth.resolution_x=40", "cloth.resolution_y=40",
+                                                     "ball.radius=0.2"}),
                   "");
         w.ballBroadPhase = broad;
         for (int f = 0; f < 60; ++f)

@@ -45,7 +45,7 @@ bool stableAt(double dt, float stiffness) {
 
 // Semi-implicit Euler is stable at the estimate (Gershgorin is a bound, so the estimate is on the
 // safe side) and unstable at 4x the estimate (so it is not uselessly small): the real limit lies
-// in between. For a grid, the measured limit is about 1.9x the estimate (bench/README.md).
+// in between. For a grid, the measured limit is about 1.5x the estimate (bench/README.md).
 TEST(Stability, EstimateIsSafeAndWithinAFactorOfFourOfTheBlowUp) {
     for (float stiffness : {60.f, 2000.f}) {
         World w;

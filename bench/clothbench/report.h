@@ -18,12 +18,25 @@ class Csv {
         std::ostringstream line;
         line.precision(9);
         int i = 0;
-        ((line << (i++ ? "," : "") << values), ...);
+        ((line << (i++ ? "," : ""), put(line, values)), ...);
         out_ << line.str() << "\n";
         out_.flush();
     }
 
   private:
+    template <class V> static void put(std::ostringstream& o, const V& v) { o << v; }
+    // Text with a comma or a quote is quoted (RFC 4180).
+    static void put(std::ostringstream& o, const std::string& v) {
+        if (v.find_first_of(",\"") == std::string::npos) {
+            o << v;
+            return;
+        }
+        o << '"';
+        for (char c : v)
+            o << (c == '"' ? "\"\"" : std::string(1, c));
+        o << '"';
+    }
+    static void put(std::ostringstream& o, const char* v) { put(o, std::string(v)); }
     std::ofstream out_;
 };
 

@@ -132,8 +132,9 @@ int runSkipping(const BenchOptions& opt) {
         const char* radius;
         int res;
     };
-    const std::vector<BallCase> cases = opt.quick ? std::vector<BallCase>{{"0.2", 32}}
-                                                  : std::vector<BallCase>{{"0.2", 64}, {"0.2", 128}, {"1", 128}};
+    const std::vector<BallCase> cases = opt.quick
+                                            ? std::vector<BallCase>{{"0.2", 32}}
+                                            : std::vector<BallCase>{{"0.2", 64}, {"0.2", 128}, {"1", 128}};
     for (const BallCase& bc : cases) {
         const std::string br = std::to_string(bc.res);
         World broad = loadOrThrow("ball-r1-v3-high", {"cloth.resolution_x=" + br, "cloth.resolution_y=" + br,
@@ -143,10 +144,11 @@ int runSkipping(const BenchOptions& opt) {
         World all = broad;
         all.ballBroadPhase = false;
         const double a = msPerFrame(broad, frames / 2), b = msPerFrame(all, frames / 2);
-        const std::string what = std::string("ball broad phase, r = ") + bc.radius + " m ball in the " + br + "x" +
-                                 br + " cloth (ball-r1-v3-high)";
+        const std::string what = std::string("ball broad phase, r = ") + bc.radius + " m ball in the " + br +
+                                 "x" + br + " cloth (ball-r1-v3-high)";
         gains.row(what, bc.res, a, b, 1.0 - a / b);
-        std::printf("  %-58s %8.3f vs %8.3f ms  (saves %4.1f%%)\n", what.c_str(), a, b, 100.0 * (1.0 - a / b));
+        std::printf("  %-58s %8.3f vs %8.3f ms  (saves %4.1f%%)\n", what.c_str(), a, b,
+                    100.0 * (1.0 - a / b));
     }
     return 0;
 }

@@ -69,11 +69,13 @@ int runStatic(const BenchOptions& opt) {
         };
         // The spring model with the guard off and as many sub-steps as the stable-step estimate
         // needs (with the guard on, its per-spring cap would still soften springs: the "app" row).
-        const int need = int(std::ceil(double(w0.settings.time.frameDt) / stableStepEstimate(w0.cloth, w0.settings)));
-        const Model models[] = {{"springs",
-                                 {"limit.enabled=false", "time.stability_guard=false",
-                                  "time.substeps=" + std::to_string(std::max(need, w0.settings.time.substeps))}},
-                                {"app", {}}};
+        const int need =
+            int(std::ceil(double(w0.settings.time.frameDt) / stableStepEstimate(w0.cloth, w0.settings)));
+        const Model models[] = {
+            {"springs",
+             {"limit.enabled=false", "time.stability_guard=false",
+              "time.substeps=" + std::to_string(std::max(need, w0.settings.time.substeps))}},
+            {"app", {}}};
         for (const Model& m : models) {
             std::vector<std::string> o = base;
             o.insert(o.end(), m.extra.begin(), m.extra.end());
