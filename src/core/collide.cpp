@@ -258,7 +258,7 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
             for (Index p : tri.p) cloth.flags[p] |= kTouched;
             for (size_t i = first; i < contacts.size(); ++i)
                 if (contacts[i].triangle == ti) return;
-            contacts.push_back(BallContact{ti, ballIndex, int8_t(side), {}});
+            contacts.push_back(BallContact{ti, ballIndex, int8_t(side), {a, b, c}}); // corners refreshed below
         });
         if (pass > 0 && !pushed) break;
     }
