@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace clothtear {
@@ -28,8 +29,10 @@ MeshData makeIrregularMesh(int particlesX, int particlesY, double width, double 
                            uint32_t seed);
 
 // OBJ import (v, vt, f; polygons are fan-triangulated). Faces without vt get planar UVs from the
-// bounding box. Errors name the file and line.
+// bounding box. Errors name the file and line. Files over 256 MiB are refused before reading.
 Result<MeshData> loadObj(const std::string& path);
+// The same from text in memory (the fuzzer, generated meshes); `source` stands for the file name.
+Result<MeshData> parseObj(std::string_view text, const std::string& source);
 // Writes a MeshData as OBJ with one vt per triangle corner.
 bool saveObj(const MeshData& mesh, const std::string& path);
 

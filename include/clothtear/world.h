@@ -113,7 +113,8 @@ public:
     uint64_t steps = 0;     // frames
     float maxStrain = 0;    // over structural springs, after the last sub-step
     bool finite = true;     // false once any NaN/Inf appeared in the state
-    std::string nonFiniteWhere; // phase and particle of the first non-finite value
+    std::string nonFiniteWhere; // where the first non-finite value was seen: phase (with check.finite
+                                // or in Debug builds, else the frame's end) and particle
 
     // Builds the cloth from settings.cloth (grid or irregular), pins it and resets the state.
     // For MeshType::Obj pass the mesh explicitly. Returns an error message or "".
@@ -148,6 +149,7 @@ private:
     void moveDrivers(float dt);
     void refreshLimitCache();
     void refreshSpringCache(float dt);
+    void checkFinite(int afterPhase);
 };
 
 } // namespace clothtear

@@ -5,7 +5,7 @@
 //   numbers        strict number and index parsing (std::from_chars, no locale)
 //   scan           one pass over the lines: v / vt / vn / f checked, line numbers kept
 //   assemble       tinyobjloader's polygons -> fan triangles with corner UVs (given or planar)
-//   loadObj
+//   parseObj, loadObj
 //   saveObj
 //
 // Why a line scan besides tinyobjloader:
@@ -42,6 +42,11 @@ namespace {
 
 // tinyobjloader stores the corner count of a polygon in an unsigned char.
 constexpr size_t kMaxFaceCorners = 255;
+
+// Largest OBJ file loadObj reads. saveObj writes about 360 bytes per particle of a grid (one vt per
+// triangle corner; measured at 100 x 100), so this holds an 850 x 850 cloth, far more than the
+// simulation runs interactively.
+constexpr uintmax_t kMaxObjBytes = uintmax_t(256) << 20;
 
 // ---- messages -----------------------------------------------------------------------------------
 
@@ -462,6 +467,11 @@ std::string readWholeFile(const std::string& path, std::string& text) {
         return path + ": cannot read: is a directory, not an OBJ file";
     if (!fs::is_regular_file(status))
         return path + ": cannot read: not a regular file";
+    // Refused before reading: the text, its sanitized copy and tinyobjloader's arrays together take
+    // several times the file size.
+    if (const uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxObjBytes)
+        return path + ": file is " + std::to_string(size >> 20) + " MiB; the importer reads at most " +
+               std::to_string(kMaxObjBytes >> 20) + " MiB (a cloth of about 850 x 850 particles)";
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in)
@@ -485,32 +495,41 @@ void appendNumber(std::string& out, double x) {
 
 // ---- loadObj ------------------------------------------------------------------------------------
 
-Result<MeshData> loadObj(const std::string& path) {
+Result<MeshData> parseObj(std::string_view text, const std::string& source) {
     try {
-        std::string text;
-        if (std::string err = readWholeFile(path, text); !err.empty())
-            return Result<MeshData>::failure(err);
         Scan scan;
         scan.sanitized.reserve(text.size());
-        if (std::string err = Scanner(path, scan).run(text); !err.empty())
+        if (std::string err = Scanner(source, scan).run(text); !err.empty())
             return Result<MeshData>::failure(err);
-        text.clear();
         MeshData mesh;
-        if (std::string err = assemble(path, scan, mesh); !err.empty())
+        if (std::string err = assemble(source, scan, mesh); !err.empty())
             return Result<MeshData>::failure(err);
         // The scan names lines; checkMesh is the same net every other mesh source goes through.
-        if (std::string err = checkMesh(mesh, path); !err.empty())
+        if (std::string err = checkMesh(mesh, source); !err.empty())
             return Result<MeshData>::failure(err);
         Result<MeshData> result;
         result.value = std::move(mesh);
         return result;
     } catch (const std::bad_alloc&) {
+        return Result<MeshData>::failure(source + ": out of memory while reading");
+    } catch (const std::exception& e) {
+        return Result<MeshData>::failure(source + ": " + e.what());
+    } catch (...) {
+        return Result<MeshData>::failure(source + ": unexpected error while reading");
+    }
+}
+
+Result<MeshData> loadObj(const std::string& path) {
+    std::string text;
+    try {
+        if (std::string err = readWholeFile(path, text); !err.empty())
+            return Result<MeshData>::failure(err);
+    } catch (const std::bad_alloc&) {
         return Result<MeshData>::failure(path + ": out of memory while reading");
     } catch (const std::exception& e) {
         return Result<MeshData>::failure(path + ": " + e.what());
-    } catch (...) {
-        return Result<MeshData>::failure(path + ": unexpected error while reading");
     }
+    return parseObj(text, path);
 }
 
 // ---- saveObj ------------------------------------------------------------------------------------

@@ -69,6 +69,7 @@ const ParamInfo kParams[] = {
     CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
     CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
+    CT_B("check.finite", check.finite, "Check for NaN/Inf after every phase of every sub-step; the report names the phase and particle (on in Debug builds)", false),
 
     CT_E("cloth.mesh", cloth.mesh, kMeshNames, "Mesh type", true),
     CT_I("cloth.resolution_x", cloth.resolutionX, 2, 256, 2, 2048, "", "Particles across", true),
