@@ -81,6 +81,8 @@ TEST_F(BadInput, SliverThatIsNotDegenerateLoadsAndStaysFinite) {
 TEST_F(BadInput, ObjNonManifoldEdgeIsRefused) {
     refusedObj(write("fin.obj", kTriangle + "v 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n"),
                {"fin.obj: non-manifold edge between vertices 1 and 2", "face 3"});
+    refusedObj(write("twice.obj", kTriangle + "f 1 2 3\nf 1 2 3\n"),
+               {"twice.obj: faces 1 and 2 use the same three vertices (a doubled face)"});
 }
 
 TEST_F(BadInput, ValuesThatAreNotNumbersOrNotFinite) {

@@ -36,8 +36,17 @@ Result<MeshData> parseObj(std::string_view text, const std::string& source);
 // Writes a MeshData as OBJ with one vt per triangle corner.
 bool saveObj(const MeshData& mesh, const std::string& path);
 
-// Checks that indices are in range, coordinates finite, and no triangle is degenerate.
-// Returns an empty string when valid; `source` prefixes the message.
+// What every mesh source is held to (checkMesh), so that the step's float state and the tear code
+// can represent the cloth: positions within +-kMaxCoordinate (float keeps ~1 cm there), texture
+// coordinates within +-kMaxUv, no edge shorter than kMinEdge (a spring's rest length as a float), and
+// no triangle whose area, in space or in UV, is below 1e-12 of its longest squared edge.
+inline constexpr double kMaxCoordinate = 1e5; // m
+inline constexpr double kMaxUv = 1e6;
+inline constexpr double kMinEdge = 1e-7; // m
+
+// Checks that indices are in range, coordinates finite and within the limits above, and no
+// triangle is degenerate in space or in UV. Returns an empty string when valid; `source` prefixes
+// the message.
 std::string checkMesh(const MeshData& mesh, const std::string& source);
 
 } // namespace clothtear

@@ -186,6 +186,16 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
         }
         c.triangles.push_back(t);
     }
+    // Two triangles on the same three particles (a doubled face) pass the edge count above, but would
+    // give an edge whose two sides are the same triangle twice: no tear could separate them.
+    for (Index s = 0; s < c.springs.size(); ++s) {
+        const SpringTopo& topo = c.springTopo[s];
+        if (topo.tri[1] == kNone) continue;
+        const Triangle &t0 = c.triangles[topo.tri[0]], &t1 = c.triangles[topo.tri[1]];
+        if (cornerOf(t1, t0.p[0]) >= 0 && cornerOf(t1, t0.p[1]) >= 0 && cornerOf(t1, t0.p[2]) >= 0)
+            return Result<Cloth>::failure("mesh: faces " + std::to_string(topo.tri[0] + 1) + " and " +
+                                          std::to_string(topo.tri[1] + 1) + " use the same three vertices (a doubled face)");
+    }
     for (Index s = 0; s < c.springs.size(); ++s) {
         refreshSpringWeight(c, s);
         syncBendSpring(c, s);

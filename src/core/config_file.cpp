@@ -23,12 +23,6 @@ std::string_view trimmed(std::string_view v) {
     return v;
 }
 
-// Long lines are cut in messages, so one bad line cannot flood the terminal.
-std::string shown(std::string_view v) {
-    constexpr size_t kMax = 60;
-    return v.size() <= kMax ? std::string(v) : std::string(v.substr(0, kMax)) + "...";
-}
-
 } // namespace
 
 Result<ConfigFile> parseConfig(std::string_view text, const std::string& source) {
@@ -56,13 +50,13 @@ Result<ConfigFile> parseConfig(std::string_view text, const std::string& source)
         line = trimmed(line.substr(0, line.find('#')));
         if (line.empty()) continue;
         const size_t eq = line.find('=');
-        if (eq == std::string_view::npos) return fail("expected 'key = value', got '" + shown(line) + "'");
+        if (eq == std::string_view::npos) return fail("expected 'key = value', got '" + shownInMessage(line) + "'");
         const std::string_view key = trimmed(line.substr(0, eq)), value = trimmed(line.substr(eq + 1));
         if (key.empty()) return fail("missing parameter name before '='");
         if (key == "scene") {
             if (value.empty()) return fail("scene: empty value");
             if (!(value.starts_with("obj:") && value.size() > 4) && !findScene(value))
-                return fail("unknown scene '" + shown(value) + "' (see --list-scenes)");
+                return fail("unknown scene '" + shownInMessage(value) + "' (see --list-scenes)");
             config.scene = std::string(value);
             continue;
         }
