@@ -96,8 +96,9 @@ TEST(FiniteCheck, RunawayIsReportedWithAPhaseAndANonFiniteParticle) {
     ASSERT_LT(p, w.cloth.particleCount());
     // A named position or velocity is non-finite; a named force (possibly on a pinned particle,
     // which the integrator never moves) has made some particle non-finite by the frame's end.
-    if (!contains(w.nonFiniteWhere, ": force"))
+    if (!contains(w.nonFiniteWhere, ": force")) {
         EXPECT_FALSE(w.cloth.x[p].allFinite() && w.cloth.v[p].allFinite()) << w.nonFiniteWhere;
+    }
     bool anyNonFinite = false;
     for (Index q = 0; q < w.cloth.particleCount(); ++q)
         anyNonFinite |= !w.cloth.x[q].allFinite() || !w.cloth.v[q].allFinite();

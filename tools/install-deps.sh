@@ -3,7 +3,8 @@
 # Usage: tools/install-deps.sh [--no-app]   (as root, or with sudo available)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libcli11-dev nlohmann-json3-dev libtinyobjloader-dev)
+          libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
+          clang-14 libclang-rt-14-dev) # clang and libFuzzer for tools/fuzz.sh
 if [[ "${1:-}" != "--no-app" ]]; then
   packages+=(libglfw3-dev libglew-dev libimgui-dev libstb-dev xvfb xauth)
 fi
