@@ -1,72 +1,13 @@
 // The `clothtear` binary as a user runs it: bad input exits with status 2 and one clear message,
 // and a headless run writes the JSON report with the documented fields.
+#include "cli_harness.h"
 #include "clothtear/world.h"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <string>
-
-namespace fs = std::filesystem;
+using namespace clitest;
 
 namespace {
-
-struct RunResult {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// A scratch directory of this test process, removed at the end.
-class CliTest : public ::testing::Test {
-  protected:
-    fs::path dir;
-    void SetUp() override {
-        ASSERT_TRUE(fs::exists(CLOTHTEAR_BINARY)) << "build the clothtear target first: " << CLOTHTEAR_BINARY;
-        dir = fs::temp_directory_path() / ("clothtear_cli_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-    // Runs the binary with `args` (already quoted where needed), capturing stdout and stderr.
-    RunResult run(const std::string& args) {
-        const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-        const std::string cmd = std::string("'") + CLOTHTEAR_BINARY + "' " + args + " >'" + out.string() +
-                                "' 2>'" + err.string() + "'";
-        const int raw = std::system(cmd.c_str());
-        RunResult r;
-        r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-        r.out = slurp(out);
-        r.err = slurp(err);
-        return r;
-    }
-};
-
-void expectRefused(const RunResult& r, const std::string& args, std::initializer_list<const char*> mentions) {
-    EXPECT_EQ(r.status, 2) << args << "\nstderr: " << r.err;
-    for (const char* m : mentions)
-        EXPECT_NE(r.err.find(m), std::string::npos) << args << ": '" << m << "' not in: " << r.err;
-    // One message, on stderr, starting with the program name.
-    EXPECT_EQ(r.err.rfind("clothtear: ", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-}
 
 TEST_F(CliTest, UnknownParameterIsRefused) {
     const std::string args = "--headless --seconds 0.1 --set nope=1";
@@ -145,6 +86,39 @@ TEST_F(CliTest, JsonToStdout) {
     const nlohmann::json j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["scene"], "corners");
     EXPECT_EQ(j["steps"], 6);
+}
+
+// --config: the file's scene and parameters, with --scene and --set on the command line winning.
+TEST_F(CliTest, ConfigFileSetsSceneAndParametersAndTheCommandLineWins) {
+    const std::string cfg = write("run.cfg", "# corners, coarse\nscene = corners\ncloth.resolution_x = 10\n"
+                                             "cloth.resolution_y = 12 # rows\n");
+    RunResult r = run("--headless --seconds 0.05 --config '" + cfg + "' --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["scene"], "corners");
+    EXPECT_EQ(j["particles"], 120);
+    EXPECT_EQ(j["pinned"], 2);
+    r = run("--headless --seconds 0.05 --config '" + cfg + "' --scene curtain --set cloth.resolution_y=5 --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["scene"], "curtain");
+    EXPECT_EQ(j["particles"], 50);
+    EXPECT_EQ(j["pinned"], 10);
+}
+
+// The report's state_hash: the same run twice gives the same hash; a different run another one.
+TEST_F(CliTest, ReportHasTheStateHashAndItRepeats) {
+    const std::string args = "--headless --scene tension --set tension.notch=1 --seconds 0.5 --json -";
+    const RunResult a = run(args), b = run(args), c = run(args + " --set tension.speed=0.6");
+    ASSERT_EQ(a.status, 0) << a.err;
+    ASSERT_EQ(b.status, 0) << b.err;
+    ASSERT_EQ(c.status, 0) << c.err;
+    const std::string ha = nlohmann::json::parse(a.out)["state_hash"], hb = nlohmann::json::parse(b.out)["state_hash"];
+    const std::string hc = nlohmann::json::parse(c.out)["state_hash"];
+    EXPECT_EQ(ha.size(), 18u) << ha; // 0x and 16 hex digits
+    EXPECT_EQ(ha.rfind("0x", 0), 0u) << ha;
+    EXPECT_EQ(ha, hb);
+    EXPECT_NE(ha, hc);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace clothtear {
@@ -28,13 +29,24 @@ MeshData makeIrregularMesh(int particlesX, int particlesY, double width, double 
                            uint32_t seed);
 
 // OBJ import (v, vt, f; polygons are fan-triangulated). Faces without vt get planar UVs from the
-// bounding box. Errors name the file and line.
+// bounding box. Errors name the file and line. Files over 256 MiB are refused before reading.
 Result<MeshData> loadObj(const std::string& path);
+// The same from text in memory (the fuzzer, generated meshes); `source` stands for the file name.
+Result<MeshData> parseObj(std::string_view text, const std::string& source);
 // Writes a MeshData as OBJ with one vt per triangle corner.
 bool saveObj(const MeshData& mesh, const std::string& path);
 
-// Checks that indices are in range, coordinates finite, and no triangle is degenerate.
-// Returns an empty string when valid; `source` prefixes the message.
+// What every mesh source is held to (checkMesh), so that the step's float state and the tear code
+// can represent the cloth: positions within +-kMaxCoordinate (float keeps ~1 cm there), texture
+// coordinates within +-kMaxUv, no edge shorter than kMinEdge (a spring's rest length as a float), and
+// no triangle whose area, in space or in UV, is below 1e-12 of its longest squared edge.
+inline constexpr double kMaxCoordinate = 1e5; // m
+inline constexpr double kMaxUv = 1e6;
+inline constexpr double kMinEdge = 1e-7; // m
+
+// Checks that indices are in range, coordinates finite and within the limits above, and no
+// triangle is degenerate in space or in UV. Returns an empty string when valid; `source` prefixes
+// the message.
 std::string checkMesh(const MeshData& mesh, const std::string& source);
 
 } // namespace clothtear

@@ -39,6 +39,10 @@ std::string setParamFromString(Settings& s, std::string_view name, std::string_v
 // Parses "key=value".
 std::string applyAssignment(Settings& s, std::string_view assignment);
 
+// User text quoted in a message: control bytes as \xNN, so the message stays one line, and long
+// text cut with "...". Parsers of parameters and config files use it for what they echo.
+std::string shownInMessage(std::string_view text);
+
 std::string formatParamValue(const Settings& s, const ParamInfo& p);
 // Markdown table of every parameter (used to generate docs/parameters.md).
 std::string paramsMarkdown();

@@ -111,6 +111,11 @@ struct SceneParams {
     float ballHeight = 0.5f; // fraction of cloth height from bottom where the ball is aimed, [0, 1]
 };
 
+struct CheckSettings {
+    bool finite = false; // scan for NaN/Inf at every phase boundary and report the phase and particle
+                         // (World::nonFiniteWhere); always on in Debug builds
+};
+
 struct Settings {
     TimeSettings time;
     MaterialSettings material;
@@ -123,6 +128,7 @@ struct Settings {
     ClothSettings cloth;
     SleepSettings sleep;
     SceneParams scene;
+    CheckSettings check;
 };
 
 } // namespace clothtear

@@ -162,7 +162,8 @@ public:
     // the particles near each ball (what the broad phase saves, bench/README.md).
     bool ballBroadPhase = true;
     bool finite = true;     // false once any NaN/Inf appeared in the state
-    std::string nonFiniteWhere; // phase and particle of the first non-finite value
+    std::string nonFiniteWhere; // where the first non-finite value was seen: phase (with check.finite
+                                // or in Debug builds, else the frame's end) and particle
 
     // Builds the cloth from settings.cloth (grid or irregular), pins it and resets the state.
     // For MeshType::Obj pass the mesh explicitly. Returns an error message or "".
@@ -218,6 +219,7 @@ private:
     void refreshSpringCache(float dt);
     void guardParticleBudget(float dt, float dragPerMass);
     float guardDragPerMass(float dt) const;
+    void checkFinite(int afterPhase);
 };
 
 } // namespace clothtear

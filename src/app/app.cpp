@@ -149,7 +149,11 @@ std::string App::openWindow() {
     window_ = glfwCreateWindow(kWindowWidth, kWindowHeight, "clothtear", nullptr, nullptr);
     if (!window_) {
         glfwTerminate();
-        return "clothtear: cannot open an OpenGL 3.3 window (" + g_glfwError + "); " + remedy;
+        // The display is there but offers no OpenGL 3.3 core context (an old driver, or
+        // MESA_GL_VERSION_OVERRIDE below 3.3): a virtual display with Mesa's renderer has one.
+        return "clothtear: cannot open an OpenGL 3.3 core window: this display's OpenGL is older or missing (" +
+               g_glfwError + "); use a driver with OpenGL 3.3 (Mesa's, e.g. `xvfb-run -a clothtear ...`), or run "
+               "without a window with `clothtear --headless ...`";
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(lockstep_ ? 0 : 1);

@@ -1,8 +1,10 @@
 // Headless runner: parse, load the scene, step, report.
 #include "runner.h"
 
+#include "clothtear/config_file.h"
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
+#include "clothtear/state_hash.h"
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -18,6 +20,7 @@ int parseCommandLine(int argc, char** argv, CliOptions& o, bool appAvailable) {
     app.add_option("--scene", o.scene, "Scene name (see --list-scenes) or obj:PATH");
     app.add_option("--seconds", o.seconds, "Simulated seconds to run (headless)")->check(CLI::Range(0.0, 1e6));
     app.add_option("--set", o.sets, "Set a parameter: --set key=value (repeatable; see --list-params)");
+    app.add_option("--config", o.config, "Read the scene and parameters from FILE ('key = value' lines, # comments)");
     app.add_option("--json", o.json, "Write the JSON report to FILE ('-' for stdout)");
     app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
@@ -49,6 +52,24 @@ int parseCommandLine(int argc, char** argv, CliOptions& o, bool appAvailable) {
     if (o.listParams) {
         std::cout << paramsMarkdown();
         return 0;
+    }
+    // The window app's options mean nothing without a window: refuse them rather than ignore them.
+    if (o.headless)
+        for (const char* option : {"--frames", "--screenshot", "--script", "--record"})
+            if (appAvailable && app.count(option)) {
+                std::cerr << "clothtear: " << option << " needs the window app; drop --headless (no display: "
+                          << "xvfb-run -a clothtear ...)\n";
+                return 2;
+            }
+    // The config file comes first: --scene and --set on the command line win over it.
+    if (app.count("--config")) {
+        Result<ConfigFile> config = loadConfig(o.config);
+        if (!config.ok()) {
+            std::cerr << "clothtear: " << config.error << "\n";
+            return 2;
+        }
+        if (!config.value.scene.empty() && !app.count("--scene")) o.scene = config.value.scene;
+        o.sets.insert(o.sets.begin(), config.value.assignments.begin(), config.value.assignments.end());
     }
     // Check every --set now, so bad input fails before any work with one clear message.
     Settings probe;
@@ -108,6 +129,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"max_y", maxY},
         {"kinetic_energy", w.kineticEnergy()},
         {"finite", w.finite},
+        {"state_hash", hashHex(stateHash(w))}, // bit-identical runs give the same hash (state_hash.h)
         {"non_finite_where", w.nonFiniteWhere},
         {"ms_per_step", w.steps ? totalMs / double(w.steps) : 0.0},
         {"wall_seconds", wallSeconds},

@@ -13,7 +13,8 @@ struct CliOptions {
     bool headless = false;
     std::string scene = "curtain";
     double seconds = 5.0;
-    std::vector<std::string> sets; // key=value, in order
+    std::vector<std::string> sets; // key=value, in order: the --config file's first, then --set
+    std::string config;            // --config FILE ("" for none); already folded into scene and sets
     std::string json;              // report path, "-" for stdout, "" for none
     bool listScenes = false;
     bool listParams = false;

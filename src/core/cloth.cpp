@@ -1,6 +1,8 @@
 // Building the cloth from a mesh, mass lumping, and the bend-shear spring bookkeeping.
 #include "clothtear/cloth.h"
 
+#include "tear_topology.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -186,11 +188,24 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
         }
         c.triangles.push_back(t);
     }
+    // Two triangles on the same three particles (a doubled face) pass the edge count above, but would
+    // give an edge whose two sides are the same triangle twice: no tear could separate them.
+    for (Index s = 0; s < c.springs.size(); ++s) {
+        const SpringTopo& topo = c.springTopo[s];
+        if (topo.tri[1] == kNone) continue;
+        const Triangle &t0 = c.triangles[topo.tri[0]], &t1 = c.triangles[topo.tri[1]];
+        if (cornerOf(t1, t0.p[0]) >= 0 && cornerOf(t1, t0.p[1]) >= 0 && cornerOf(t1, t0.p[2]) >= 0)
+            return Result<Cloth>::failure("mesh: faces " + std::to_string(topo.tri[0] + 1) + " and " +
+                                          std::to_string(topo.tri[1] + 1) + " use the same three vertices (a doubled face)");
+    }
     for (Index s = 0; s < c.springs.size(); ++s) {
         refreshSpringWeight(c, s);
         syncBendSpring(c, s);
     }
     for (Index p = 0; p < n; ++p) c.refreshInvMass(p);
+    // A mesh may come with tear tips (a slit: two vertices at one rest point) or one-point
+    // connections (a bow tie): the weak/hinge flags follow the fans from the start.
+    for (Index p = 0; p < n; ++p) c.flags[p] |= fanFlags(c, p);
     double restSum = 0;
     for (const Spring& s : c.springs) restSum += s.rest;
     c.minSplitRest = float(kMinSplitFraction * restSum / double(c.springs.size()));

@@ -3,7 +3,9 @@
 #include "clothtear/mesh.h"
 #include "clothtear/random.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace clothtear {
 namespace {
@@ -86,25 +88,41 @@ MeshData makeIrregularMesh(int nx, int ny, double width, double height, double j
 
 std::string checkMesh(const MeshData& mesh, const std::string& source) {
     if (mesh.cornerUVs.size() != mesh.triangles.size()) return source + ": UV count does not match triangle count";
-    for (size_t v = 0; v < mesh.positions.size(); ++v)
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
         if (!mesh.positions[v].allFinite())
             return source + ": vertex " + std::to_string(v + 1) + " has a non-finite coordinate";
+        if (mesh.positions[v].cwiseAbs().maxCoeff() > kMaxCoordinate)
+            return source + ": vertex " + std::to_string(v + 1) + " lies beyond +-" + std::to_string(int(kMaxCoordinate)) +
+                   " m of the origin";
+    }
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
+        const std::string face = source + ": face " + std::to_string(t + 1);
         for (Index v : tri)
             if (v >= mesh.positions.size())
-                return source + ": face " + std::to_string(t + 1) + " refers to vertex " + std::to_string(v + 1) +
-                       " but there are only " + std::to_string(mesh.positions.size());
-        for (const Vec2d& uv : mesh.cornerUVs[t])
-            if (!uv.allFinite()) return source + ": face " + std::to_string(t + 1) + " has a non-finite UV";
-        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
-            return source + ": face " + std::to_string(t + 1) + " repeats a vertex";
+                return face + " refers to vertex " + std::to_string(v + 1) + " but there are only " +
+                       std::to_string(mesh.positions.size());
+        const auto& uv = mesh.cornerUVs[t];
+        for (const Vec2d& c : uv) {
+            if (!c.allFinite()) return face + " has a non-finite UV";
+            if (c.cwiseAbs().maxCoeff() > kMaxUv) return face + " has a texture coordinate beyond +-1e6";
+        }
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return face + " repeats a vertex";
         const Vec3d& a = mesh.positions[tri[0]];
         const Vec3d& b = mesh.positions[tri[1]];
         const Vec3d& c = mesh.positions[tri[2]];
         const double scale = std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
-        if (!(triangleArea(a, b, c) > 1e-12 * scale) || scale == 0.0)
-            return source + ": face " + std::to_string(t + 1) + " is degenerate (zero area)";
+        if (!(triangleArea(a, b, c) > 1e-12 * scale) || scale == 0.0) return face + " is degenerate (zero area)";
+        const double shortest = std::sqrt(std::min({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()}));
+        if (shortest < kMinEdge) {
+            char len[32];
+            std::snprintf(len, sizeof len, "%.3g", shortest);
+            return face + " has an edge of " + len + " m; edges under 1e-7 m are refused";
+        }
+        const double uvScale = std::max({(uv[1] - uv[0]).squaredNorm(), (uv[2] - uv[0]).squaredNorm(),
+                                         (uv[2] - uv[1]).squaredNorm()});
+        if (!(std::abs(uvArea(uv[0], uv[1], uv[2])) > 1e-12 * uvScale))
+            return face + " has texture coordinates with zero area (the texture cannot follow it when it tears)";
     }
     return {};
 }

@@ -5,7 +5,7 @@
 //   numbers        strict number and index parsing (std::from_chars, no locale)
 //   scan           one pass over the lines: v / vt / vn / f checked, line numbers kept
 //   assemble       tinyobjloader's polygons -> fan triangles with corner UVs (given or planar)
-//   loadObj
+//   parseObj, loadObj
 //   saveObj
 //
 // Why a line scan besides tinyobjloader:
@@ -42,6 +42,11 @@ namespace {
 
 // tinyobjloader stores the corner count of a polygon in an unsigned char.
 constexpr size_t kMaxFaceCorners = 255;
+
+// Largest OBJ file loadObj reads. saveObj writes about 360 bytes per particle of a grid (one vt per
+// triangle corner; measured at 100 x 100), so this holds an 850 x 850 cloth, far more than the
+// simulation runs interactively.
+constexpr uintmax_t kMaxObjBytes = uintmax_t(256) << 20;
 
 // ---- messages -----------------------------------------------------------------------------------
 
@@ -213,8 +218,9 @@ class Scanner {
     }
 
     // Parses tokens[1..] as numbers; `what` names them in messages ("vertex", "texture coordinate").
+    // Checked numbers must be finite and within +-limit (mesh.h: what the float state can hold).
     std::string numbers(const std::vector<std::string_view>& tokens, size_t firstChecked, size_t lastChecked,
-                        const std::string& what, double* out) {
+                        const std::string& what, double limit, const char* limitText, double* out) {
         for (size_t i = 1; i < tokens.size(); ++i) {
             double value = 0;
             switch (parseNumber(tokens[i], value)) {
@@ -228,6 +234,8 @@ class Scanner {
             if (i >= firstChecked && i <= lastChecked) {
                 if (!std::isfinite(value))
                     return fail(what + " has a non-finite coordinate " + quoted(tokens[i]));
+                if (std::abs(value) > limit)
+                    return fail(what + ": " + quoted(tokens[i]) + " is beyond " + limitText);
                 out[i - 1] = value;
             }
         }
@@ -242,7 +250,8 @@ class Scanner {
             return fail(what + " has " + counted(n, "number", "numbers") +
                         "; expected 'v x y z' (optionally w or r g b)");
         double xyz[3];
-        if (std::string err = numbers(tokens, 1, 3, what, xyz); !err.empty())
+        if (std::string err = numbers(tokens, 1, 3, what, kMaxCoordinate, "+-1e5 m (mesh.h kMaxCoordinate)", xyz);
+            !err.empty())
             return err;
         out_.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
         out_.sanitized += "v ";
@@ -258,7 +267,7 @@ class Scanner {
         if (n < 1 || n > 3)
             return fail(what + " has " + counted(n, "number", "numbers") + "; expected 'vt u [v [w]]'");
         double uv[3] = {0, 0, 0};
-        if (std::string err = numbers(tokens, 1, 2, what, uv); !err.empty())
+        if (std::string err = numbers(tokens, 1, 2, what, kMaxUv, "+-1e6 (mesh.h kMaxUv)", uv); !err.empty())
             return err;
         out_.uvs.emplace_back(uv[0], uv[1]);
         out_.sanitized += "vt " + std::string(tokens[1]) + " " + (n >= 2 ? std::string(tokens[2]) : "0");
@@ -355,9 +364,17 @@ bool degenerate(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
     const double scale = std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
     return scale == 0.0 || !(triangleArea(a, b, c) > 1e-12 * scale);
 }
+bool degenerateUv(const std::array<Vec2d, 3>& uv) {
+    const double scale = std::max({(uv[1] - uv[0]).squaredNorm(), (uv[2] - uv[0]).squaredNorm(),
+                                   (uv[2] - uv[1]).squaredNorm()});
+    return !(std::abs(uvArea(uv[0], uv[1], uv[2])) > 1e-12 * scale);
+}
 
 // Planar UVs: project onto the two axes of largest bounding-box extent (kept in x, y, z order so an x-y
-// mesh gets u = x, v = y), normalized to [0, 1] over the box of the vertices the faces use.
+// mesh gets u = x, v = y), normalized to [0, 1] over the box of the vertices the faces use. A face
+// standing edge-on to that plane (a fold, the side of a box) would get a texture triangle of no
+// area, which no tear could split; it is projected onto the plane of its own normal's largest
+// component instead, with the same normalization (a texture seam there, but a usable triangle).
 void planarUVs(MeshData& mesh, const std::vector<bool>& needsPlanar) {
     Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const auto& tri : mesh.triangles)
@@ -370,17 +387,31 @@ void planarUVs(MeshData& mesh, const std::vector<bool>& needsPlanar) {
     for (int i : {1, 0})
         if (extent[i] < extent[drop])
             drop = i;
-    const int a = drop == 0 ? 1 : 0, b = drop == 2 ? 1 : 2;
     auto coord = [&](const Vec3d& p, int axis) {
         return extent[axis] > 0 ? (p[axis] - lo[axis]) / extent[axis] : 0.0;
     };
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        if (!needsPlanar[t])
-            continue;
+    auto project = [&](size_t t, int dropAxis) {
+        const int a = dropAxis == 0 ? 1 : 0, b = dropAxis == 2 ? 1 : 2;
         for (int k = 0; k < 3; ++k) {
             const Vec3d& p = mesh.positions[mesh.triangles[t][k]];
             mesh.cornerUVs[t][k] = Vec2d(coord(p, a), coord(p, b));
         }
+    };
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!needsPlanar[t])
+            continue;
+        project(t, drop);
+        if (!degenerateUv(mesh.cornerUVs[t]))
+            continue;
+        const auto& tri = mesh.triangles[t];
+        const Vec3d normal = (mesh.positions[tri[1]] - mesh.positions[tri[0]])
+                                 .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]])
+                                 .cwiseAbs();
+        int own = 0;
+        for (int i : {1, 2})
+            if (normal[i] > normal[own])
+                own = i;
+        project(t, own);
     }
 }
 
@@ -405,6 +436,7 @@ std::string assemble(const std::string& path, const Scan& scan, MeshData& mesh) 
 
     mesh.positions = scan.positions;
     std::vector<bool> needsPlanar;
+    std::vector<size_t> triangleLine; // the `f` line each triangle came from
     size_t faceIndex = 0;
     for (const tinyobj::shape_t& shape : shapes) {
         const std::vector<tinyobj::index_t>& idx = shape.mesh.indices;
@@ -442,6 +474,7 @@ std::string assemble(const std::string& path, const Scan& scan, MeshData& mesh) 
                 mesh.triangles.push_back(tri);
                 mesh.cornerUVs.push_back(uv);
                 needsPlanar.push_back(!face.hasUV);
+                triangleLine.push_back(face.line);
             }
             offset += corners;
         }
@@ -449,6 +482,21 @@ std::string assemble(const std::string& path, const Scan& scan, MeshData& mesh) 
     if (faceIndex != scan.faces.size())
         return path + disagree + " about the number of faces";
     planarUVs(mesh, needsPlanar);
+    // The rest of checkMesh's criteria, here with the line of the face.
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        const Vec3d &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+        const double shortest = std::sqrt(std::min({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()}));
+        if (shortest < kMinEdge) {
+            char len[32];
+            std::snprintf(len, sizeof len, "%.3g", shortest);
+            return atLine(path, triangleLine[t], std::string("face has an edge of ") + len +
+                                                     " m; edges under 1e-7 m are refused");
+        }
+        if (degenerateUv(mesh.cornerUVs[t]))
+            return atLine(path, triangleLine[t],
+                          "face has texture coordinates with zero area (the texture cannot follow it when it tears)");
+    }
     return {};
 }
 
@@ -462,6 +510,11 @@ std::string readWholeFile(const std::string& path, std::string& text) {
         return path + ": cannot read: is a directory, not an OBJ file";
     if (!fs::is_regular_file(status))
         return path + ": cannot read: not a regular file";
+    // Refused before reading: the text, its sanitized copy and tinyobjloader's arrays together take
+    // several times the file size.
+    if (const uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxObjBytes)
+        return path + ": file is " + std::to_string(size >> 20) + " MiB; the importer reads at most " +
+               std::to_string(kMaxObjBytes >> 20) + " MiB (a cloth of about 850 x 850 particles)";
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in)
@@ -485,32 +538,41 @@ void appendNumber(std::string& out, double x) {
 
 // ---- loadObj ------------------------------------------------------------------------------------
 
-Result<MeshData> loadObj(const std::string& path) {
+Result<MeshData> parseObj(std::string_view text, const std::string& source) {
     try {
-        std::string text;
-        if (std::string err = readWholeFile(path, text); !err.empty())
-            return Result<MeshData>::failure(err);
         Scan scan;
         scan.sanitized.reserve(text.size());
-        if (std::string err = Scanner(path, scan).run(text); !err.empty())
+        if (std::string err = Scanner(source, scan).run(text); !err.empty())
             return Result<MeshData>::failure(err);
-        text.clear();
         MeshData mesh;
-        if (std::string err = assemble(path, scan, mesh); !err.empty())
+        if (std::string err = assemble(source, scan, mesh); !err.empty())
             return Result<MeshData>::failure(err);
         // The scan names lines; checkMesh is the same net every other mesh source goes through.
-        if (std::string err = checkMesh(mesh, path); !err.empty())
+        if (std::string err = checkMesh(mesh, source); !err.empty())
             return Result<MeshData>::failure(err);
         Result<MeshData> result;
         result.value = std::move(mesh);
         return result;
     } catch (const std::bad_alloc&) {
+        return Result<MeshData>::failure(source + ": out of memory while reading");
+    } catch (const std::exception& e) {
+        return Result<MeshData>::failure(source + ": " + e.what());
+    } catch (...) {
+        return Result<MeshData>::failure(source + ": unexpected error while reading");
+    }
+}
+
+Result<MeshData> loadObj(const std::string& path) {
+    std::string text;
+    try {
+        if (std::string err = readWholeFile(path, text); !err.empty())
+            return Result<MeshData>::failure(err);
+    } catch (const std::bad_alloc&) {
         return Result<MeshData>::failure(path + ": out of memory while reading");
     } catch (const std::exception& e) {
         return Result<MeshData>::failure(path + ": " + e.what());
-    } catch (...) {
-        return Result<MeshData>::failure(path + ": unexpected error while reading");
     }
+    return parseObj(text, path);
 }
 
 // ---- saveObj ------------------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 
@@ -73,6 +74,7 @@ const ParamInfo kParams[] = {
     CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
     CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
+    CT_B("check.finite", check.finite, "Check for NaN/Inf after every phase of every sub-step; the report names the phase and particle (on in Debug builds)", false),
 
     CT_B("sleep.enabled", sleep.enabled, "Stop simulating a cloth at rest until a ball, driver, wind, impulse or change of settings can move it", false),
     CT_F("sleep.speed", sleep.speed, 1e-5, 0.1, 1e-6, 1, "m/s", "Sleep: a cloth whose particles are all slower than this is at rest", false),
@@ -133,6 +135,24 @@ std::string fmtDouble(double v) {
 
 std::span<const ParamInfo> allParams() { return kParams; }
 
+// At most 60 characters, so one bad value cannot flood the terminal.
+std::string shownInMessage(std::string_view v) {
+    constexpr size_t kMax = 60;
+    std::string out;
+    for (size_t i = 0; i < v.size() && i < kMax; ++i) {
+        const unsigned char c = static_cast<unsigned char>(v[i]);
+        if (c < 0x20 || c == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        } else {
+            out += char(c);
+        }
+    }
+    if (v.size() > kMax) out += "...";
+    return out;
+}
+
 const ParamInfo* findParam(std::string_view name) {
     for (const ParamInfo& p : kParams)
         if (name == p.name) return &p;
@@ -160,13 +180,14 @@ void setParamUnchecked(Settings& s, const ParamInfo& p, double value) {
 
 std::string setParamFromString(Settings& s, std::string_view name, std::string_view rawValue) {
     const ParamInfo* p = findParam(name);
-    if (!p) return "unknown parameter '" + std::string(name) + "' (see --list-params for the list)";
+    if (!p) return "unknown parameter '" + shownInMessage(name) + "' (see --list-params for the list)";
     const std::string value = trim(rawValue);
     if (value.empty()) return "parameter '" + std::string(name) + "': empty value";
+    const std::string said = shownInMessage(value);
     if (p->type == ParamType::Bool) {
         if (value == "1" || value == "true" || value == "on" || value == "yes") field<bool>(s, *p) = true;
         else if (value == "0" || value == "false" || value == "off" || value == "no") field<bool>(s, *p) = false;
-        else return "parameter '" + std::string(name) + "': '" + value + "' is not a boolean (use true/false, on/off, 1/0)";
+        else return "parameter '" + std::string(name) + "': '" + said + "' is not a boolean (use true/false, on/off, 1/0)";
         return {};
     }
     if (p->type == ParamType::Enum) {
@@ -184,16 +205,16 @@ std::string setParamFromString(Settings& s, std::string_view name, std::string_v
         }
         std::string options;
         for (int i = 0; i < n; ++i) options += std::string(i ? ", " : "") + p->enumNames[i];
-        return "parameter '" + std::string(name) + "': '" + value + "' is not one of: " + options;
+        return "parameter '" + std::string(name) + "': '" + said + "' is not one of: " + options;
     }
     double parsed = 0;
     auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), parsed);
     if (ec != std::errc() || ptr != value.data() + value.size() || !std::isfinite(parsed))
-        return "parameter '" + std::string(name) + "': '" + value + "' is not a number";
+        return "parameter '" + std::string(name) + "': '" + said + "' is not a number";
     if (p->type == ParamType::Int && parsed != std::floor(parsed))
-        return "parameter '" + std::string(name) + "': '" + value + "' is not an integer";
+        return "parameter '" + std::string(name) + "': '" + said + "' is not an integer";
     if (parsed < p->hardMin || parsed > p->hardMax)
-        return "parameter '" + std::string(name) + "': " + value + " is outside the valid range [" +
+        return "parameter '" + std::string(name) + "': " + said + " is outside the valid range [" +
                fmtDouble(p->hardMin) + ", " + fmtDouble(p->hardMax) + "]" + (p->unit[0] ? std::string(" ") + p->unit : "");
     setParamUnchecked(s, *p, parsed);
     return {};
@@ -202,7 +223,7 @@ std::string setParamFromString(Settings& s, std::string_view name, std::string_v
 std::string applyAssignment(Settings& s, std::string_view assignment) {
     const size_t eq = assignment.find('=');
     if (eq == std::string_view::npos)
-        return "malformed assignment '" + std::string(assignment) + "' (expected key=value)";
+        return "malformed assignment '" + shownInMessage(assignment) + "' (expected key=value)";
     return setParamFromString(s, trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
 }
 

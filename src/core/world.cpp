@@ -12,6 +12,7 @@
 
 #include "clothtear/tear.h"
 #include "collide.h"
+#include "finite_check.h"
 #include "implicit_euler.h"
 #include "parallel.h"
 #include "step_kernels.h"
@@ -61,6 +62,13 @@ inline uint32_t bitsOf(float f) {
     std::memcpy(&u, &f, sizeof u);
     return u;
 }
+
+// Debug builds check for NaN/Inf at every phase boundary whatever check.finite says.
+#if CLOTHTEAR_CHECK_FINITE
+constexpr bool kAlwaysCheckFinite = true;
+#else
+constexpr bool kAlwaysCheckFinite = false;
+#endif
 
 // Threads worth using for a cloth of n particles (forking costs a few microseconds).
 int threadsFor(size_t particles) { return particles >= 2048 ? std::min(maxThreads(), kMaxThreadSlots) : 1; }
@@ -196,6 +204,10 @@ void World::substep() {
     const float dt = settings.time.frameDt / float(substeps);
     // The reference integrators treat the springs inside their own step.
     const bool reference = !isExplicit(settings.time.integrator);
+    // Debug builds and check.finite: the first phase boundary with a NaN/Inf is reported
+    // (nonFiniteWhere). A check after a phase that did not run finds what the previous one found.
+    const bool check = kAlwaysCheckFinite || settings.check.finite;
+    if (check) checkFinite(-1);
     {
         PhaseTimer t(profile, Phase::Forces);
         phaseForces(dt);
@@ -204,32 +216,39 @@ void World::substep() {
         PhaseTimer t(profile, Phase::Springs);
         phaseSprings(dt);
     }
+    if (check) checkFinite(int(Phase::Springs));
     if (settings.wind.enabled && settings.wind.speed > 0.f && settings.wind.dragCoefficient > 0.f) {
         PhaseTimer t(profile, Phase::Wind);
         phaseWind(dt);
     }
+    if (check) checkFinite(int(Phase::Wind));
     {
         PhaseTimer t(profile, Phase::Integrate);
         if (reference) phaseIntegrateReference(dt);
         else phaseIntegrate(dt);
     }
+    if (check) checkFinite(int(Phase::Integrate));
     if (!balls.empty()) {
         PhaseTimer t(profile, Phase::Collide);
         phaseCollide(dt);
     }
+    if (check) checkFinite(int(Phase::Collide));
     // The limit pass doubles as the strain scan, so it runs when either needs it.
     if ((settings.limit.enabled && settings.limit.iterations > 0) || settings.tear.enabled) {
         PhaseTimer t(profile, Phase::Limit);
         phaseLimit(dt);
     }
+    if (check) checkFinite(int(Phase::Limit));
     if (!balls.empty() || settings.collision.ground) {
         PhaseTimer t(profile, Phase::Contact);
         phaseContact(dt);
     }
+    if (check) checkFinite(int(Phase::Contact));
     if (settings.tear.enabled && !scratch_.tearCandidates.empty()) {
         PhaseTimer t(profile, Phase::Tear);
         phaseTear();
     }
+    if (check) checkFinite(int(Phase::Tear));
     time += dt;
     profile.substeps++;
 }
@@ -1096,6 +1115,20 @@ void World::phaseContact(float dt) {
 }
 
 // ============================================================================================= [MISC]
+
+// After phase `after` (-1: before the sub-step's first phase, i.e. set from outside the step): the
+// first non-finite value, with the phase, frame and time, into nonFiniteWhere. The force buffers are
+// read after the phases that fill them (springs, wind); the integrator clears them.
+void World::checkFinite(int after) {
+    if (!finite) return; // the first one is the one to trace
+    const bool forces = after == int(Phase::Springs) || after == int(Phase::Wind);
+    const std::string what = findNonFinite(cloth, balls, forces ? &scratch_.threadAcc : nullptr);
+    if (what.empty()) return;
+    finite = false;
+    const std::string where = after < 0 ? std::string("before a sub-step (set from outside the step)")
+                                        : std::string("after phase '") + phaseName(Phase(after)) + "'";
+    nonFiniteWhere = where + " at frame " + std::to_string(steps) + ", t = " + std::to_string(time) + " s: " + what;
+}
 
 // Once per frame: the largest structural strain (compared as squared length ratios, one square
 // root at the end) and the first non-finite particle, both split over the threads.

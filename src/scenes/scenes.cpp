@@ -207,6 +207,8 @@ std::string loadScene(World& world, std::string_view name, std::span<const std::
     next.settings = settings;
     if (isObj && settings.cloth.mesh != MeshType::Obj) next.settings.cloth.mesh = MeshType::Obj;
     std::string err = isObj ? next.rebuild(objMesh) : next.rebuild();
+    // buildCloth calls its input "mesh"; from a file, name the file (non-manifold edges).
+    if (isObj && err.starts_with("mesh: ")) err = std::string(name.substr(4)) + err.substr(4);
     if (!err.empty()) return err;
     if (scene) scene->populate(next);
     world = std::move(next);

@@ -122,7 +122,7 @@ Result<InputScript> loadInputScript(const std::string& path) {
 }
 
 std::string formatInputScript(const InputScript& script) {
-    std::string out = "# clothtear input script: <frame> <event> <args> (see src/app/input_script.h)\n";
+    std::string out = "# clothtear input script: <frame> <event> <args> (see src/input/input_script.h)\n";
     for (const InputEvent& e : script.events) {
         out += std::to_string(e.frame) + " ";
         switch (e.kind) {

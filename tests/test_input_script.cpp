@@ -1,11 +1,11 @@
-// Input scripts: parsing, round trip, and errors with file:line.
+// Input scripts (src/input): parsing, round trip, and errors with file:line.
 #include "input_script.h"
 
 #include <gtest/gtest.h>
 
 using namespace clothtear::app;
 
-TEST(AppInputScript, ParsesEveryEvent) {
+TEST(InputScript, ParsesEveryEvent) {
     const char* text = "# a comment\n"
                        "0 move 640 360.5\n"
                        "\n"
@@ -40,7 +40,7 @@ TEST(AppInputScript, ParsesEveryEvent) {
     EXPECT_EQ(r.value.lastFrame(), 12u);
 }
 
-TEST(AppInputScript, RoundTrips) {
+TEST(InputScript, RoundTrips) {
     InputScript s;
     s.events = {{0, InputKind::Move, 12.25f, 700.f, 0},  {3, InputKind::Down, 0, 0, 0},
                 {3, InputKind::Move, 13.f, 1.f / 3.f, 0}, {4, InputKind::Up, 0, 0, 0},
@@ -54,7 +54,7 @@ TEST(AppInputScript, RoundTrips) {
     EXPECT_EQ(formatInputScript(r.value), text);
 }
 
-TEST(AppInputScript, BadLinesNameFileAndLine) {
+TEST(InputScript, BadLinesNameFileAndLine) {
     struct Case {
         const char* text;
         const char* expected;
@@ -76,41 +76,16 @@ TEST(AppInputScript, BadLinesNameFileAndLine) {
     }
 }
 
-TEST(AppInputScript, MissingFileIsAnError) {
+TEST(InputScript, MissingFileIsAnError) {
     auto r = loadInputScript("/nonexistent/script.txt");
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error.find("/nonexistent/script.txt"), std::string::npos);
 }
 
-TEST(AppInputScript, KeyNames) {
+TEST(InputScript, KeyNames) {
     for (int code : {32, 48, 57, 65, 90, 256, 257, 265, 290, 301, 340, 347, 123, 500})
         EXPECT_EQ(keyFromName(keyName(code)), code) << keyName(code);
     EXPECT_EQ(keyFromName("f12"), 301);
     EXPECT_EQ(keyFromName("F0"), -1);
     EXPECT_EQ(keyFromName("KEY_x"), -1);
-}
-
-#include "input_state.h"
-
-TEST(AppInputState, ClickShorterThanAFrameIsStillSeenAsHeld) {
-    InputState s;
-    s.apply({0, InputKind::Move, 10.f, 20.f, 0});
-    s.apply({0, InputKind::Down, 0, 0, 0});
-    s.apply({0, InputKind::Up, 0, 0, 0});
-    s.apply({0, InputKind::KeyDown, 0, 0, 80});
-    s.apply({0, InputKind::KeyUp, 0, 0, 80});
-    s.apply({0, InputKind::Scroll, 0.f, 2.f, 0});
-    s.apply({0, InputKind::Char, 0, 0, 'x'});
-    EXPECT_TRUE(s.buttonHeld(0));
-    EXPECT_FALSE(s.buttons[0]);
-    EXPECT_TRUE(s.keyHeld(80));
-    EXPECT_FLOAT_EQ(s.wheelY, 2.f);
-    EXPECT_EQ(s.pending.size(), 7u);
-    EXPECT_EQ(s.chars.size(), 1u);
-    s.endFrame();
-    EXPECT_FALSE(s.buttonHeld(0));
-    EXPECT_FALSE(s.keyHeld(80));
-    EXPECT_FLOAT_EQ(s.wheelY, 0.f);
-    EXPECT_TRUE(s.pending.empty());
-    EXPECT_FLOAT_EQ(s.mouseX, 10.f); // the cursor stays where it is
 }
