@@ -31,8 +31,11 @@ run_one() {
   local t="$1" log="$build/fuzz_$1.log"
   mkdir -p "$build/corpus/$t"
   local status=0
+  # git keeps no empty folders: a target with no regression yet has no fuzz/regressions/<target>.
+  local dirs=("$build/corpus/$t" "fuzz/corpus/$t")
+  [[ -d "fuzz/regressions/$t" ]] && dirs+=("fuzz/regressions/$t")
   "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" \
-    "$build/corpus/$t" "fuzz/corpus/$t" "fuzz/regressions/$t" > "$log" 2>&1 || status=$?
+    "${dirs[@]}" > "$log" 2>&1 || status=$?
   local execs cov
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   cov=$(grep -E '^#[0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+ corp: [0-9]+/[0-9a-zA-Z]+' || echo "cov: ?")
