@@ -30,12 +30,14 @@ TEST(Soak, ShortRunInteractsAndEveryCheckHolds) {
 // torn-off sliver of 1e-15 kg reached 1e8 m/s.
 TEST(SoakFindings, ReleasedParticleIsCappedFromItsFirstSubStep) {
     World w;
-    ASSERT_EQ(loadScene(w, "curtain",
-                        std::vector<std::string>{"cloth.resolution_x=10", "cloth.resolution_y=10", "gravity.y=0",
-                                                 "material.stretch_stiffness=1e5", "limit.enabled=0", "tear.enabled=0",
-                                                 "collision.ground=0", "check.finite=1"}),
-              "");
-    for (Index p = 0; p < w.cloth.particleCount(); ++p) w.cloth.setPinned(p, true);
+    ASSERT_EQ(
+        loadScene(w, "curtain",
+                  std::vector<std::string>{"cloth.resolution_x=10", "cloth.resolution_y=10", "gravity.y=0",
+                                           "material.stretch_stiffness=1e5", "limit.enabled=0",
+                                           "tear.enabled=0", "collision.ground=0", "check.finite=1"}),
+        "");
+    for (Index p = 0; p < w.cloth.particleCount(); ++p)
+        w.cloth.setPinned(p, true);
     // Two sub-steps: the spring cache now holds every spring with both ends pinned (nothing to cap),
     // keyed on the pins the integration of the first one saw.
     w.substep();
@@ -61,9 +63,9 @@ TEST(SoakFindings, WindOnASliverIsBoundedByItsRestArea) {
     m.cornerUVs = {{Vec2d(0, 0), Vec2d(1, 0), Vec2d(0.5, 1)}};
     World w;
     for (const char* set : {"gravity.y=0", "material.stretch_stiffness=0", "material.stretch_damping=0",
-                            "material.bend_stiffness=0", "material.bend_damping=0", "limit.enabled=0", "tear.enabled=0",
-                            "collision.ground=0", "wind.enabled=1", "wind.speed=6", "wind.gust=0", "air.drag=0",
-                            "cloth.pin=none", "check.finite=1"})
+                            "material.bend_stiffness=0", "material.bend_damping=0", "limit.enabled=0",
+                            "tear.enabled=0", "collision.ground=0", "wind.enabled=1", "wind.speed=6",
+                            "wind.gust=0", "air.drag=0", "cloth.pin=none", "check.finite=1"})
         ASSERT_EQ(applyAssignment(w.settings, set), "") << set;
     ASSERT_EQ(w.rebuild(m), "");
     w.cloth.x[2] = Vec3(0.5f, 1.f, 0.f); // live shape: current area 0.5 m^2, a million times the rest area

@@ -19,11 +19,11 @@ struct SoakOptions {
 
 struct SoakResult {
     long frames = 0;
-    uint64_t tears = 0;    // over all rebuilds
-    int rebuilds = 0;      // fresh cloths after the first
+    uint64_t tears = 0; // over all rebuilds
+    int rebuilds = 0;   // fresh cloths after the first
     uint64_t grabs = 0, impulses = 0, balls = 0;
     double rssStartMiB = 0, rssEndMiB = 0, rssMaxMiB = 0;
-    std::string failure;   // "" or the first non-finite value / broken invariant
+    std::string failure; // "" or the first non-finite value / broken invariant
     bool ok() const { return failure.empty(); }
 };
 

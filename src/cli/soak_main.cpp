@@ -11,8 +11,10 @@ int main(int argc, char** argv) {
     app.add_option("--minutes", o.minutes, "Wall-clock length")->check(CLI::Range(0.0, 1e6));
     app.add_option("--resolution", o.resolution, "Particles a side")->check(CLI::Range(4, 1024));
     app.add_option("--seed", o.seed, "Seed of the interaction");
-    app.add_option("--report-every", o.reportSeconds, "Wall-clock seconds between lines")->check(CLI::Range(0.1, 1e6));
-    app.add_option("--frames", o.maxFrames, "Stop after N frames instead")->check(CLI::Range(0L, 1000000000L));
+    app.add_option("--report-every", o.reportSeconds, "Wall-clock seconds between lines")
+        ->check(CLI::Range(0.1, 1e6));
+    app.add_option("--frames", o.maxFrames, "Stop after N frames instead")
+        ->check(CLI::Range(0L, 1000000000L));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -23,9 +25,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     const clothtear::SoakResult r = clothtear::runSoak(o, std::cout);
-    std::cout << "soak: " << r.frames << " frames, " << r.tears << " tears, " << r.rebuilds << " rebuilds, " << r.grabs
-              << " grabs, " << r.impulses << " impulses, " << r.balls << " balls; RSS start " << r.rssStartMiB
-              << " MiB, end " << r.rssEndMiB << " MiB, max " << r.rssMaxMiB << " MiB; "
+    std::cout << "soak: " << r.frames << " frames, " << r.tears << " tears, " << r.rebuilds << " rebuilds, "
+              << r.grabs << " grabs, " << r.impulses << " impulses, " << r.balls << " balls; RSS start "
+              << r.rssStartMiB << " MiB, end " << r.rssEndMiB << " MiB, max " << r.rssMaxMiB << " MiB; "
               << (r.ok() ? "every check held" : "FAILED: " + r.failure) << "\n";
     return r.ok() ? 0 : 1;
 }
