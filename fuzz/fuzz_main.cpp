@@ -7,8 +7,8 @@
 #include <cstdlib>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string problem = clothtear::fuzz::CLOTHTEAR_FUZZ_HARNESS(
-        std::string_view(reinterpret_cast<const char*>(data), size));
+    const std::string problem =
+        clothtear::fuzz::CLOTHTEAR_FUZZ_HARNESS(std::string_view(reinterpret_cast<const char*>(data), size));
     if (!problem.empty()) {
         std::fprintf(stderr, "clothtear fuzz: %s\n", problem.c_str());
         std::abort();

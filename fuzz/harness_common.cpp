@@ -14,9 +14,12 @@ std::span<const Target> targets() {
 }
 
 std::string checkMessage(const std::string& message, const std::string& source) {
-    if (message.empty()) return "refused without a message";
-    if (message.rfind(source, 0) != 0) return "message does not start with '" + source + "': " + message;
-    if (message.find('\n') != std::string::npos) return "message is more than one line: " + message;
+    if (message.empty())
+        return "refused without a message";
+    if (message.rfind(source, 0) != 0)
+        return "message does not start with '" + source + "': " + message;
+    if (message.find('\n') != std::string::npos)
+        return "message is more than one line: " + message;
     return {};
 }
 

@@ -10,13 +10,15 @@ namespace clothtear::fuzz {
 std::string fuzzConfig(std::string_view bytes) {
     const std::string source = "fuzz.cfg";
     const Result<ConfigFile> r = parseConfig(bytes, source);
-    if (!r.ok()) return checkMessage(r.error, source);
+    if (!r.ok())
+        return checkMessage(r.error, source);
     const ConfigFile& c = r.value;
     if (!c.scene.empty() && !c.scene.starts_with("obj:") && !findScene(c.scene))
         return "accepted unknown scene '" + c.scene + "'";
     Settings s;
     for (const std::string& a : c.assignments)
-        if (std::string err = applyAssignment(s, a); !err.empty()) return "accepted '" + a + "' that --set refuses: " + err;
+        if (std::string err = applyAssignment(s, a); !err.empty())
+            return "accepted '" + a + "' that --set refuses: " + err;
     return {};
 }
 

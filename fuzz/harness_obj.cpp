@@ -17,7 +17,8 @@ constexpr int kTears = 6;
 
 uint64_t seedOf(std::string_view bytes) {
     uint64_t h = 0xcbf29ce484222325ull;
-    for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+    for (unsigned char c : bytes)
+        h = (h ^ c) * 0x100000001b3ull;
     return h;
 }
 
@@ -26,15 +27,20 @@ uint64_t seedOf(std::string_view bytes) {
 std::string fuzzObj(std::string_view bytes) {
     const std::string source = "fuzz.obj";
     const Result<MeshData> loaded = parseObj(bytes, source);
-    if (!loaded.ok()) return checkMessage(loaded.error, source);
+    if (!loaded.ok())
+        return checkMessage(loaded.error, source);
     const MeshData& mesh = loaded.value;
-    if (std::string err = checkMesh(mesh, source); !err.empty()) return "accepted a mesh checkMesh refuses: " + err;
+    if (std::string err = checkMesh(mesh, source); !err.empty())
+        return "accepted a mesh checkMesh refuses: " + err;
     Result<Cloth> built = buildCloth(mesh, 0.2f);
-    if (!built.ok()) return checkMessage(built.error, "mesh: "); // non-manifold edges
+    if (!built.ok())
+        return checkMessage(built.error, "mesh: "); // non-manifold edges
     Cloth& cloth = built.value;
     const double area = cloth.totalRestArea(), uvArea = cloth.totalUvArea();
-    if (std::string err = validateCloth(cloth, area, uvArea); !err.empty()) return "built an invalid cloth: " + err;
-    if (cloth.triangles.size() > kMaxSimulatedTriangles) return {};
+    if (std::string err = validateCloth(cloth, area, uvArea); !err.empty())
+        return "built an invalid cloth: " + err;
+    if (cloth.triangles.size() > kMaxSimulatedTriangles)
+        return {};
 
     Rng rng(seedOf(bytes));
     TearSettings settings;
@@ -47,9 +53,11 @@ std::string fuzzObj(std::string_view bytes) {
     }
     World world;
     world.settings.check.finite = true;
-    if (std::string err = world.rebuild(mesh); !err.empty()) return "World::rebuild refused what buildCloth took: " + err;
+    if (std::string err = world.rebuild(mesh); !err.empty())
+        return "World::rebuild refused what buildCloth took: " + err;
     world.step();
-    if (!world.finite) return "one frame went non-finite: " + world.nonFiniteWhere;
+    if (!world.finite)
+        return "one frame went non-finite: " + world.nonFiniteWhere;
     return {};
 }
 

@@ -53,8 +53,8 @@ class CliTest : public ::testing::Test {
     // The same through a wrapper command (`prefix` ends with a space), e.g. setpriv to drop root.
     RunResult runVia(const std::string& prefix, const std::string& args) {
         const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-        const std::string cmd = prefix + "'" + CLOTHTEAR_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
-                                err.string() + "'";
+        const std::string cmd = prefix + "'" + CLOTHTEAR_BINARY + "' " + args + " >'" + out.string() +
+                                "' 2>'" + err.string() + "'";
         const int raw = std::system(cmd.c_str());
         RunResult r;
         r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -64,7 +64,8 @@ class CliTest : public ::testing::Test {
     }
 };
 
-inline void expectRefused(const RunResult& r, const std::string& args, std::initializer_list<const char*> mentions) {
+inline void expectRefused(const RunResult& r, const std::string& args,
+                          std::initializer_list<const char*> mentions) {
     EXPECT_EQ(r.status, 2) << args << "\nstderr: " << r.err;
     for (const char* m : mentions)
         EXPECT_NE(r.err.find(m), std::string::npos) << args << ": '" << m << "' not in: " << r.err;

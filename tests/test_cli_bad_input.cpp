@@ -38,18 +38,23 @@ TEST_F(BadInput, ObjWithoutReadPermission) {
     // Root reads any file: as root, run the binary as the unprivileged user `nobody` instead.
     std::string prefix;
     if (::geteuid() == 0) {
-        if (std::system("command -v setpriv >/dev/null 2>&1") != 0) GTEST_SKIP() << "root without setpriv";
+        if (std::system("command -v setpriv >/dev/null 2>&1") != 0)
+            GTEST_SKIP() << "root without setpriv";
         prefix = "--reuid=65534 --regid=65534 --clear-groups ";
     }
     const std::string args = "--headless --seconds 0.1 --scene 'obj:" + file + "'";
     const RunResult r = prefix.empty() ? run(args) : runVia("setpriv " + prefix, args);
-    if (r.status == 126 || r.status == 127) GTEST_SKIP() << "`nobody` cannot run the binary here: " << r.err;
+    if (r.status == 126 || r.status == 127)
+        GTEST_SKIP() << "`nobody` cannot run the binary here: " << r.err;
     expectRefused(r, args, {"secret.obj: cannot open: Permission denied"});
 }
 
 TEST_F(BadInput, ObjEmptyBinaryOrHuge) {
     refusedObj(write("empty.obj", ""), {"empty.obj: no faces (the file is empty)"});
-    refusedObj(write("elf.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10)), {"elf.obj:1: binary data (byte 0x7f"});
+    refusedObj(write("elf.obj", std::string("\x7f"
+                                            "ELF\x02\x01\x01\0\0\0",
+                                            10)),
+               {"elf.obj:1: binary data (byte 0x7f"});
     // 257 MiB without writing them: a sparse file. Refused before a byte is read.
     const std::string huge = write("huge.obj", kTriangle);
     fs::resize_file(huge, (uintmax_t(257) << 20));
@@ -61,16 +66,19 @@ TEST_F(BadInput, ObjIndicesCoordinatesAndFaces) {
                {"range.obj:5: face refers to vertex 40 but only 3 vertices are defined"});
     refusedObj(write("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n"),
                {"nan.obj:3: vertex 3 has a non-finite coordinate 'nan'"});
-    refusedObj(write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"), {"line.obj:4: face is degenerate (zero area)"});
+    refusedObj(write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"),
+               {"line.obj:4: face is degenerate (zero area)"});
     // Area below 1e-12 of the longest squared edge counts as none.
-    refusedObj(write("flat.obj", "v 0 0 0\nv 1 0 0\nv 0.5 1e-13 0\nf 1 2 3\n"), {"flat.obj:4: face is degenerate"});
+    refusedObj(write("flat.obj", "v 0 0 0\nv 1 0 0\nv 0.5 1e-13 0\nf 1 2 3\n"),
+               {"flat.obj:4: face is degenerate"});
 }
 
 // A sliver that is not degenerate loads, and the stability guard keeps its light corner finite.
 TEST_F(BadInput, SliverThatIsNotDegenerateLoadsAndStaysFinite) {
     const std::string file = write("sliver.obj", "v -1 1 0\nv 1 1 0\nv -1 -1 0\nv 1 -1 0\nv 0 1.000001 0\n"
                                                  "f 1 3 4\nf 1 4 2\nf 1 2 5\n");
-    const RunResult r = run("--headless --seconds 1 --set check.finite=1 --scene 'obj:" + file + "' --json -");
+    const RunResult r =
+        run("--headless --seconds 1 --set check.finite=1 --scene 'obj:" + file + "' --json -");
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["finite"], true) << j["non_finite_where"];
@@ -101,7 +109,8 @@ TEST_F(BadInput, CommandLineValuesCli11Checks) {
 
 TEST_F(BadInput, ConfigFileErrorsNameFileAndLine) {
     const std::string missing = (dir / "missing.cfg").string();
-    expectRefused(run("--headless --config '" + missing + "'"), "missing config", {"missing.cfg: cannot open config file"});
+    expectRefused(run("--headless --config '" + missing + "'"), "missing config",
+                  {"missing.cfg: cannot open config file"});
     const std::string bad = write("bad.cfg", "# ok\nscene = tension\ntear.threshold = lots\n");
     expectRefused(run("--headless --config '" + bad + "'"), "bad config",
                   {"bad.cfg:3: parameter 'tear.threshold': 'lots' is not a number"});
@@ -116,15 +125,18 @@ TEST_F(BadInput, WindowOptionsWithHeadlessAreRefused) {
 }
 
 TEST_F(BadInput, UnwritableReportPath) {
-    const std::string args = "--headless --seconds 0.05 --json '" + (dir / "no/such/dir/r.json").string() + "'";
+    const std::string args =
+        "--headless --seconds 0.05 --json '" + (dir / "no/such/dir/r.json").string() + "'";
     expectRefused(run(args), args, {"cannot write report to", "r.json"});
 }
 
 // Unsafe parameters on purpose: the run exits 1 and the report says where the first NaN/Inf was.
 TEST_F(BadInput, RunThatBlowsUpExits1AndSaysWhere) {
     const std::string report = (dir / "r.json").string();
-    const RunResult r = run("--headless --scene curtain --seconds 0.2 --set time.stability_guard=0 --set limit.enabled=0 "
-                            "--set material.stretch_stiffness=1e6 --set check.finite=1 --json '" + report + "'");
+    const RunResult r =
+        run("--headless --scene curtain --seconds 0.2 --set time.stability_guard=0 --set limit.enabled=0 "
+            "--set material.stretch_stiffness=1e6 --set check.finite=1 --json '" +
+            report + "'");
     EXPECT_EQ(r.status, 1) << r.err;
     const nlohmann::json j = nlohmann::json::parse(slurp(report));
     EXPECT_EQ(j["finite"], false);

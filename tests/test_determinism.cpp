@@ -32,7 +32,8 @@ uint64_t runHash(const char* scene, const std::vector<std::string>& sets, int fr
     World w;
     EXPECT_EQ(loadScene(w, scene, sets), "");
     for (int f = 0; f < frames; ++f) {
-        if (f % 7 == 3) w.applyImpulse(w.cloth.x[w.cloth.particleCount() / 2], 0.4f, Vec3(0.f, 0.f, 1.f), 2.f);
+        if (f % 7 == 3)
+            w.applyImpulse(w.cloth.x[w.cloth.particleCount() / 2], 0.4f, Vec3(0.f, 0.f, 1.f), 2.f);
         if (f == 20) {
             Ball b;
             b.radius = 0.3f;
@@ -85,7 +86,9 @@ TEST(Determinism, SameRunSameHashMultiThreaded) {
 // The hash must see every part of the state it claims to cover, or equal hashes prove nothing.
 TEST(Determinism, HashSeesOneUlpOfVelocityATearABallAndTime) {
     World w;
-    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=10", "cloth.resolution_y=10"}), "");
+    ASSERT_EQ(
+        loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=10", "cloth.resolution_y=10"}),
+        "");
     w.step();
     const uint64_t h0 = stateHash(w);
     EXPECT_EQ(stateHash(w), h0);

@@ -13,15 +13,18 @@ namespace {
 
 World checkedCurtain() {
     World w;
-    EXPECT_EQ(loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12",
-                                                               "check.finite=1"}),
+    EXPECT_EQ(loadScene(w, "curtain",
+                        std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12",
+                                                 "check.finite=1"}),
               "");
     return w;
 }
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 } // namespace
 
@@ -43,10 +46,12 @@ TEST(FiniteCheck, NaNGravityIsTracedToTheIntegratorAndTheFirstFreeParticle) {
     w.step();
     EXPECT_FALSE(w.finite);
     Index firstFree = 0;
-    while (w.cloth.pinned(firstFree)) ++firstFree; // pinned particles are not integrated
+    while (w.cloth.pinned(firstFree))
+        ++firstFree; // pinned particles are not integrated
     // x += v dt makes the position NaN too; positions are reported first.
     EXPECT_TRUE(contains(w.nonFiniteWhere, "after phase 'integrate' at frame 0")) << w.nonFiniteWhere;
-    EXPECT_TRUE(contains(w.nonFiniteWhere, "particle " + std::to_string(firstFree) + ": position")) << w.nonFiniteWhere;
+    EXPECT_TRUE(contains(w.nonFiniteWhere, "particle " + std::to_string(firstFree) + ": position"))
+        << w.nonFiniteWhere;
 }
 
 TEST(FiniteCheck, NaNSpringIsTracedToTheSpringPhaseAndItsForce) {
@@ -57,7 +62,8 @@ TEST(FiniteCheck, NaNSpringIsTracedToTheSpringPhaseAndItsForce) {
     w.step();
     EXPECT_FALSE(w.finite);
     EXPECT_TRUE(contains(w.nonFiniteWhere, "after phase 'springs'")) << w.nonFiniteWhere;
-    EXPECT_TRUE(contains(w.nonFiniteWhere, "particle " + std::to_string(first) + ": force")) << w.nonFiniteWhere;
+    EXPECT_TRUE(contains(w.nonFiniteWhere, "particle " + std::to_string(first) + ": force"))
+        << w.nonFiniteWhere;
 }
 
 TEST(FiniteCheck, BallIsChecked) {
@@ -75,11 +81,12 @@ TEST(FiniteCheck, BallIsChecked) {
 // names a phase and a particle that really is non-finite, and nothing is reported before.
 TEST(FiniteCheck, RunawayIsReportedWithAPhaseAndANonFiniteParticle) {
     World w;
-    ASSERT_EQ(loadScene(w, "curtain",
-                        std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12", "check.finite=1",
-                                                 "time.stability_guard=0", "limit.enabled=0", "tear.enabled=0",
-                                                 "material.stretch_stiffness=3000"}),
-              "");
+    ASSERT_EQ(
+        loadScene(w, "curtain",
+                  std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12", "check.finite=1",
+                                           "time.stability_guard=0", "limit.enabled=0", "tear.enabled=0",
+                                           "material.stretch_stiffness=3000"}),
+        "");
     int frames = 0;
     while (w.finite && frames < 600) {
         w.step();
@@ -109,7 +116,9 @@ TEST(FiniteCheck, RunawayIsReportedWithAPhaseAndANonFiniteParticle) {
 // Without check.finite (and outside Debug) the frame's end still catches it: never silent.
 TEST(FiniteCheck, WithoutTheCheckTheFrameEndStillReportsIt) {
     World w;
-    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12"}), "");
+    ASSERT_EQ(
+        loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=12", "cloth.resolution_y=12"}),
+        "");
     w.cloth.v[100].x() = kNaN;
     w.step();
     EXPECT_FALSE(w.finite);

@@ -23,9 +23,11 @@ std::string readBytes(const fs::path& p) {
 size_t replay(const clothtear::fuzz::Target& target, const char* kind) {
     const fs::path dir = fs::path(CLOTHTEAR_FUZZ_DIR) / kind / target.name;
     size_t files = 0;
-    if (!fs::exists(dir)) return 0;
+    if (!fs::exists(dir))
+        return 0;
     for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-        if (!e.is_regular_file() || e.path().filename() == "README.md") continue;
+        if (!e.is_regular_file() || e.path().filename() == "README.md")
+            continue;
         ++files;
         EXPECT_EQ(target.run(readBytes(e.path())), "") << e.path();
     }
@@ -40,7 +42,8 @@ TEST(FuzzCorpus, EverySeedPassesItsHarness) {
 }
 
 TEST(FuzzCorpus, EveryRegressionInputPassesItsHarness) {
-    for (const clothtear::fuzz::Target& t : clothtear::fuzz::targets()) replay(t, "regressions");
+    for (const clothtear::fuzz::Target& t : clothtear::fuzz::targets())
+        replay(t, "regressions");
 }
 
 // The harnesses must be able to fail, or a passing corpus proves nothing.

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace clothtear::app;
 
 TEST(InputScript, ParsesEveryEvent) {
@@ -42,11 +44,11 @@ TEST(InputScript, ParsesEveryEvent) {
 
 TEST(InputScript, RoundTrips) {
     InputScript s;
-    s.events = {{0, InputKind::Move, 12.25f, 700.f, 0},  {3, InputKind::Down, 0, 0, 0},
+    s.events = {{0, InputKind::Move, 12.25f, 700.f, 0},   {3, InputKind::Down, 0, 0, 0},
                 {3, InputKind::Move, 13.f, 1.f / 3.f, 0}, {4, InputKind::Up, 0, 0, 0},
-                {8, InputKind::Scroll, 0.f, 2.f, 0},       {9, InputKind::KeyDown, 0, 0, 340},
-                {9, InputKind::KeyUp, 0, 0, 123},          {10, InputKind::Char, 0, 0, 0x263A},
-                {11, InputKind::KeyDown, 0, 0, 32},        {20, InputKind::End, 0, 0, 0}};
+                {8, InputKind::Scroll, 0.f, 2.f, 0},      {9, InputKind::KeyDown, 0, 0, 340},
+                {9, InputKind::KeyUp, 0, 0, 123},         {10, InputKind::Char, 0, 0, 0x263A},
+                {11, InputKind::KeyDown, 0, 0, 32},       {20, InputKind::End, 0, 0, 0}};
     const std::string text = formatInputScript(s);
     auto r = parseInputScript(text, "mem");
     ASSERT_TRUE(r.ok()) << r.error << "\n" << text;
@@ -88,4 +90,33 @@ TEST(InputScript, KeyNames) {
     EXPECT_EQ(keyFromName("f12"), 301);
     EXPECT_EQ(keyFromName("F0"), -1);
     EXPECT_EQ(keyFromName("KEY_x"), -1);
+}
+
+// A script cut at any byte (an interrupted copy, a full disk) either still parses, as the events
+// before the cut, or is refused with one line naming the file and the line that was cut.
+TEST(InputScript, EveryTruncationParsesOrNamesTheCutLine) {
+    const std::string text =
+        "# drag and throw\n0 move 640 360\n2 down left\n5 move 700.25 380\n9 up left\n"
+        "10 key_down LEFT_CONTROL\n11 scroll 0 -1.5\n12 char 9786\n14 click right\n20 end\n";
+    const auto whole = parseInputScript(text, "s.txt");
+    ASSERT_TRUE(whole.ok()) << whole.error;
+    int refused = 0;
+    for (size_t cut = 0; cut < text.size(); ++cut) {
+        const std::string part = text.substr(0, cut);
+        const auto r = parseInputScript(part, "s.txt");
+        const size_t lines = size_t(std::count(part.begin(), part.end(), '\n')) + 1;
+        if (r.ok()) {
+            // What parsed is a prefix of the whole script's events.
+            ASSERT_LE(r.value.events.size(), whole.value.events.size()) << "cut at " << cut;
+            for (size_t i = 0; i < r.value.events.size(); ++i)
+                if (!(r.value.events[i] == whole.value.events[i]) && i + 1 < r.value.events.size())
+                    ADD_FAILURE() << "cut at " << cut << ": event " << i << " differs";
+            continue;
+        }
+        ++refused;
+        EXPECT_EQ(r.error.rfind("s.txt:" + std::to_string(lines) + ": ", 0), 0u)
+            << "cut at " << cut << ": " << r.error;
+        EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
+    }
+    EXPECT_GT(refused, 10) << "cuts inside a word must be refused";
 }

@@ -20,14 +20,17 @@ namespace {
 
 // CLOTHTEAR_TOPOLOGY_TEARS=N asks for N tears; CLOTHTEAR_NIGHTLY=1 for 10^5; else 10^4.
 uint64_t tearBudget() {
-    if (const char* n = std::getenv("CLOTHTEAR_TOPOLOGY_TEARS"); n && *n) return std::strtoull(n, nullptr, 10);
+    if (const char* n = std::getenv("CLOTHTEAR_TOPOLOGY_TEARS"); n && *n)
+        return std::strtoull(n, nullptr, 10);
     const char* nightly = std::getenv("CLOTHTEAR_NIGHTLY");
     return nightly && *nightly && std::string(nightly) != "0" ? 100000 : 10000;
 }
 
 // Rng(s + k) is Rng(s) k draws later (SplitMix64 steps its state by a constant), so neighbouring
 // seeds would share most of their numbers; one SplitMix64 output of the seed starts an unrelated stream.
-Rng streamFor(uint64_t seed) { return Rng(Rng(seed).next()); }
+Rng streamFor(uint64_t seed) {
+    return Rng(Rng(seed).next());
+}
 
 } // namespace
 
@@ -52,8 +55,10 @@ TEST(TopologyFuzz, RandomTearsOnRandomMeshesKeepEveryInvariant) {
         const int count = 50 + int(rng.below(250));
         const TearStats st = randomTears(cloth, rng, count, [&](uint64_t n) {
             std::string err = validateCloth(cloth, area, uvArea);
-            if (err.empty() && std::abs(cloth.totalMass() - mass) > 1e-9 * mass) err = "the mass changed";
-            if (!err.empty()) failure = where + ", after tear " + std::to_string(n) + ": " + err;
+            if (err.empty() && std::abs(cloth.totalMass() - mass) > 1e-9 * mass)
+                err = "the mass changed";
+            if (!err.empty())
+                failure = where + ", after tear " + std::to_string(n) + ": " + err;
             return err.empty();
         });
         ASSERT_EQ(failure, "");
@@ -65,7 +70,8 @@ TEST(TopologyFuzz, RandomTearsOnRandomMeshesKeepEveryInvariant) {
         ASSERT_EQ(world.rebuild(mesh), "") << where;
         world.cloth = std::move(cloth);
         world.pinByMode(PinMode::TopEdge);
-        for (int f = 0; f < 3; ++f) world.step();
+        for (int f = 0; f < 3; ++f)
+            world.step();
         EXPECT_TRUE(world.finite) << where << ": " << world.nonFiniteWhere;
         EXPECT_EQ(validateCloth(world.cloth, area, uvArea), "") << where << ", after simulating";
 
@@ -76,18 +82,22 @@ TEST(TopologyFuzz, RandomTearsOnRandomMeshesKeepEveryInvariant) {
         total.repeated += st.repeated;
         total.cutLines += st.cutLines;
         total.piecesCut += st.piecesCut;
-        for (int m = 0; m < 3; ++m) total.modes[m] += st.modes[m];
+        for (int m = 0; m < 3; ++m)
+            total.modes[m] += st.modes[m];
     }
-    std::cout << "topology fuzz: " << total.torn << " tears (" << total.tried << " tried) on " << seed << " meshes";
+    std::cout << "topology fuzz: " << total.torn << " tears (" << total.tried << " tried) on " << seed
+              << " meshes";
     for (int k = 0; k < int(MeshKind::Count); ++k)
-        std::cout << "; " << meshKindName(MeshKind(k)) << ": " << meshes[k] << " meshes, " << tearsOn[k] << " tears";
-    std::cout << "\n  basic " << total.modes[0] << ", weak point " << total.modes[1] << ", one point " << total.modes[2]
-              << "; repeated at the same place " << total.repeated << "; " << total.cutLines << " cuts, "
-              << total.piecesCut << " pieces cut off\n";
+        std::cout << "; " << meshKindName(MeshKind(k)) << ": " << meshes[k] << " meshes, " << tearsOn[k]
+                  << " tears";
+    std::cout << "\n  basic " << total.modes[0] << ", weak point " << total.modes[1] << ", one point "
+              << total.modes[2] << "; repeated at the same place " << total.repeated << "; " << total.cutLines
+              << " cuts, " << total.piecesCut << " pieces cut off\n";
     RecordProperty("tears", std::to_string(total.torn));
     // The sequences did what they are for.
     EXPECT_GE(total.torn, budget);
-    for (int m = 0; m < 3; ++m) EXPECT_GT(total.modes[m], 0u) << "tear mode " << m << " never happened";
+    for (int m = 0; m < 3; ++m)
+        EXPECT_GT(total.modes[m], 0u) << "tear mode " << m << " never happened";
     EXPECT_GT(total.repeated, budget / 20);
     EXPECT_GT(total.piecesCut, 0u) << "no cut separated a piece";
 }
@@ -114,7 +124,8 @@ TEST(TopologyFuzz, ObjLikeMeshesHaveHolesSliversAndPieces) {
         withHoles += text.find("f ") != std::string::npos && pieceCount(c.value) >= 1 &&
                      c.value.totalRestArea() < 0.999 * [&] {
                          Vec3d lo = c.value.rest[0], hi = lo;
-                         for (const Vec3d& r : c.value.rest) lo = lo.cwiseMin(r), hi = hi.cwiseMax(r);
+                         for (const Vec3d& r : c.value.rest)
+                             lo = lo.cwiseMin(r), hi = hi.cwiseMax(r);
                          return (hi.x() - lo.x()) * (hi.y() - lo.y());
                      }();
         multiPiece += pieceCount(c.value) > 1;

@@ -26,9 +26,9 @@ clothtear::MeshData randomMesh(MeshKind k, clothtear::Rng& rng, std::string* obj
 // Counts of a tear sequence.
 struct TearStats {
     uint64_t tried = 0, torn = 0;
-    uint64_t repeated = 0;   // tears of the spring just torn, or at the particle it touched
-    uint64_t cutLines = 0;   // lines cut across the cloth
-    uint64_t piecesCut = 0;  // pieces added by those cuts (connected components)
+    uint64_t repeated = 0;           // tears of the spring just torn, or at the particle it touched
+    uint64_t cutLines = 0;           // lines cut across the cloth
+    uint64_t piecesCut = 0;          // pieces added by those cuts (connected components)
     std::array<uint64_t, 3> modes{}; // basic, weak point, one point
 };
 

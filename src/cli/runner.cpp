@@ -18,7 +18,9 @@ int parseCommandLine(int argc, char** argv, CliOptions& o, bool appAvailable) {
     CLI::App app{"clothtear: interactive cloth tearing (Onal 2013) and its headless runner"};
     app.add_flag("--headless", o.headless, "Run without a window and print/write a report");
     app.add_option("--scene", o.scene, "Scene name (see --list-scenes) or obj:PATH");
-    app.add_option("--seconds", o.seconds, "Simulated seconds to run (headless)")->check(CLI::Range(0.0, 1e6));
+    app.add_option("--seconds", o.seconds, "Simulated seconds to run (headless)")
+        ->check(CLI::Number) // "not a number" before "not in range" for text
+        ->check(CLI::Range(0.0, 1e6));
     app.add_option("--set", o.sets, "Set a parameter: --set key=value (repeatable; see --list-params)");
     app.add_option("--config", o.config, "Read the scene and parameters from FILE ('key = value' lines, # comments)");
     app.add_option("--json", o.json, "Write the JSON report to FILE ('-' for stdout)");
@@ -26,7 +28,7 @@ int parseCommandLine(int argc, char** argv, CliOptions& o, bool appAvailable) {
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");
     if (appAvailable) {
-        app.add_option("--frames", o.frames, "App: run N frames, then exit")->check(CLI::Range(0, 100000000));
+        app.add_option("--frames", o.frames, "App: run N frames, then exit")->check(CLI::Number)->check(CLI::Range(0, 100000000));
         app.add_option("--screenshot", o.screenshot, "App: write a PNG of the last frame to FILE");
         app.add_option("--script", o.script, "App: replay an input script");
         app.add_option("--record", o.record, "App: record input to a script file");

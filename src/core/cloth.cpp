@@ -43,6 +43,7 @@ void refreshSpringWeight(Cloth& cloth, Index s) {
 void Cloth::refreshInvMass(Index p) {
     const double m = particleMass(p);
     invMass[p] = (flags[p] & kPinned) || m <= 0.0 ? 0.0f : static_cast<float>(1.0 / m);
+    ++massRevision;
 }
 
 void Cloth::setPinned(Index p, bool on) {

@@ -18,8 +18,10 @@ namespace {
 constexpr uintmax_t kMaxConfigBytes = uintmax_t(1) << 20;
 
 std::string_view trimmed(std::string_view v) {
-    while (!v.empty() && (v.front() == ' ' || v.front() == '\t')) v.remove_prefix(1);
-    while (!v.empty() && (v.back() == ' ' || v.back() == '\t' || v.back() == '\r')) v.remove_suffix(1);
+    while (!v.empty() && (v.front() == ' ' || v.front() == '\t'))
+        v.remove_prefix(1);
+    while (!v.empty() && (v.back() == ' ' || v.back() == '\t' || v.back() == '\r'))
+        v.remove_suffix(1);
     return v;
 }
 
@@ -31,7 +33,8 @@ Result<ConfigFile> parseConfig(std::string_view text, const std::string& source)
     size_t lineNo = 0, pos = 0;
     while (pos < text.size()) {
         size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
+        if (end == std::string_view::npos)
+            end = text.size();
         std::string_view line = text.substr(pos, end - pos);
         pos = end + 1;
         ++lineNo;
@@ -48,19 +51,24 @@ Result<ConfigFile> parseConfig(std::string_view text, const std::string& source)
             }
         }
         line = trimmed(line.substr(0, line.find('#')));
-        if (line.empty()) continue;
+        if (line.empty())
+            continue;
         const size_t eq = line.find('=');
-        if (eq == std::string_view::npos) return fail("expected 'key = value', got '" + shownInMessage(line) + "'");
+        if (eq == std::string_view::npos)
+            return fail("expected 'key = value', got '" + shownInMessage(line) + "'");
         const std::string_view key = trimmed(line.substr(0, eq)), value = trimmed(line.substr(eq + 1));
-        if (key.empty()) return fail("missing parameter name before '='");
+        if (key.empty())
+            return fail("missing parameter name before '='");
         if (key == "scene") {
-            if (value.empty()) return fail("scene: empty value");
+            if (value.empty())
+                return fail("scene: empty value");
             if (!(value.starts_with("obj:") && value.size() > 4) && !findScene(value))
                 return fail("unknown scene '" + shownInMessage(value) + "' (see --list-scenes)");
             config.scene = std::string(value);
             continue;
         }
-        if (std::string err = setParamFromString(probe, key, value); !err.empty()) return fail(err);
+        if (std::string err = setParamFromString(probe, key, value); !err.empty())
+            return fail(err);
         config.assignments.push_back(std::string(key) + "=" + std::string(value));
     }
     return Result<ConfigFile>{std::move(config), {}};
@@ -80,10 +88,11 @@ Result<ConfigFile> loadConfig(const std::string& path) {
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        return Result<ConfigFile>::failure(path + ": cannot open config file: " +
-                                           (errno ? std::strerror(errno) : "unknown error"));
+        return Result<ConfigFile>::failure(
+            path + ": cannot open config file: " + (errno ? std::strerror(errno) : "unknown error"));
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) return Result<ConfigFile>::failure(path + ": read error");
+    if (in.bad())
+        return Result<ConfigFile>::failure(path + ": read error");
     return parseConfig(text, path);
 }
 

@@ -8,7 +8,8 @@ namespace {
 
 template <class V> std::string describe(const char* what, size_t index, const char* field, const V& value) {
     std::ostringstream o;
-    o << what << " " << index << ": " << field << " (" << value[0] << ", " << value[1] << ", " << value[2] << ")";
+    o << what << " " << index << ": " << field << " (" << value[0] << ", " << value[1] << ", " << value[2]
+      << ")";
     return o.str();
 }
 
@@ -17,12 +18,16 @@ template <class V> std::string describe(const char* what, size_t index, const ch
 std::string findNonFinite(const Cloth& c, const std::vector<Ball>& balls,
                           const std::vector<std::vector<Eigen::Vector4f>>* forces) {
     for (size_t p = 0; p < c.x.size(); ++p) {
-        if (!c.x[p].allFinite()) return describe("particle", p, "position", c.x[p]);
-        if (!c.v[p].allFinite()) return describe("particle", p, "velocity", c.v[p]);
+        if (!c.x[p].allFinite())
+            return describe("particle", p, "position", c.x[p]);
+        if (!c.v[p].allFinite())
+            return describe("particle", p, "velocity", c.v[p]);
     }
     for (size_t b = 0; b < balls.size(); ++b) {
-        if (!balls[b].x.allFinite()) return describe("ball", b, "position", balls[b].x);
-        if (!balls[b].v.allFinite()) return describe("ball", b, "velocity", balls[b].v);
+        if (!balls[b].x.allFinite())
+            return describe("ball", b, "position", balls[b].x);
+        if (!balls[b].v.allFinite())
+            return describe("ball", b, "velocity", balls[b].v);
     }
     if (forces) {
         // The lowest particle over all buffers: a particle's force is the sum of its buffers.
@@ -35,7 +40,8 @@ std::string findNonFinite(const Cloth& c, const std::vector<Ball>& balls,
                     value = buffer[p];
                     break;
                 }
-        if (first < c.x.size()) return describe("particle", first, "force", value);
+        if (first < c.x.size())
+            return describe("particle", first, "force", value);
     }
     return {};
 }

@@ -9,11 +9,12 @@ namespace clothtear {
 namespace {
 
 class Fnv1a {
-public:
+  public:
     uint64_t value = 0xcbf29ce484222325ull; // offset basis
     void bytes(const void* data, size_t size) {
         const auto* p = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < size; ++i) value = (value ^ p[i]) * 0x100000001b3ull; // FNV prime
+        for (size_t i = 0; i < size; ++i)
+            value = (value ^ p[i]) * 0x100000001b3ull; // FNV prime
     }
     template <class T> void scalar(T v) {
         static_assert(std::is_arithmetic_v<T>);
@@ -25,7 +26,8 @@ public:
         if constexpr (std::is_arithmetic_v<T>)
             bytes(v.data(), v.size() * sizeof(T));
         else
-            for (const T& e : v) bytes(e.data(), sizeof(typename T::Scalar) * size_t(e.size()));
+            for (const T& e : v)
+                bytes(e.data(), sizeof(typename T::Scalar) * size_t(e.size()));
     }
 };
 

@@ -271,8 +271,9 @@ void World::phaseForces(float /*dt*/) {
     scratch_.packed.resize(n);
 }
 
-// The spring cache follows the topology revision, the cloth's arrays, the pinned particles (from
-// the last integration, so a pin change reaches the guard one sub-step late), the material and dt.
+// The spring cache follows the topology revision, the cloth's arrays, the inverse masses (mass
+// revision: a particle let go by a tool is capped from its first sub-step; one sub-step late, a
+// torn-off sliver of 1e-15 kg went to 1e8 m/s in the soak), the material and dt.
 //
 // Order: within each block of 64 springs, entry 8q + j holds spring 8j + q of the block, so the
 // springs of a SIMD group (4 or 8) come from places 8 springs apart in mesh order. Springs next
@@ -290,7 +291,7 @@ void World::refreshSpringCache(float dt) {
                           uint64_t(bitsOf(m.stretchStiffness)), uint64_t(bitsOf(m.stretchDamping)),
                           uint64_t(bitsOf(m.bendStiffness)), uint64_t(bitsOf(m.bendDamping)), uint64_t(bitsOf(dt)),
                           uint64_t(bitsOf(cloth.density)), uint64_t(guard) + 2 * uint64_t(bends),
-                          uint64_t(bitsOf(guardDragPerMass(dt)))})
+                          uint64_t(bitsOf(guardDragPerMass(dt))), cloth.massRevision})
         key = hashIndex(key ^ word);
     if (key == S.key) return;
     const size_t ns = cloth.springs.size(), nb = bends ? cloth.bends.size() : 0;
@@ -428,7 +429,8 @@ void World::phaseSprings(float dt) {
 }
 
 // Wind on each triangle from its normal and the relative air velocity (so a flag flutters):
-//   F = c A (n . v_rel) |n . v_rel| n,   v_rel = wind - mean triangle velocity, shared by the corners.
+//   F = c A (n . v_rel) |n . v_rel| n,   v_rel = wind - mean triangle velocity, shared by the corners,
+//   A = current area, at most twice the rest area.
 //
 // With the stability guard on, the force on a triangle is capped so that it cannot change its
 // lightest corner's normal velocity by more than the relative normal speed in one sub-step (drag
@@ -460,7 +462,11 @@ void World::phaseWind(float dt) {
             const Vec3 nrm = cross / twiceArea;
             const Vec3 vrel = wind - (v[tri.p[0]] + v[tri.p[1]] + v[tri.p[2]]) * (1.f / 3.f);
             const float vn = nrm.dot(vrel);
-            float mag = w.dragCoefficient * 0.5f * twiceArea * vn * std::abs(vn) / 3.f;
+            // The corners' masses come from the rest area: a sliver torn to 1e-15 m^2 whose float
+            // corners cannot get closer than ~1e-8 m would catch 10^4 times its share of wind and
+            // explode (soak; also with the guard off). Its area counts up to twice the rest area.
+            const float area = std::min(0.5f * twiceArea, 2.f * float(tri.restArea));
+            float mag = w.dragCoefficient * area * vn * std::abs(vn) / 3.f;
             if (guard) {
                 const float wMax = std::max({invMass[tri.p[0]], invMass[tri.p[1]], invMass[tri.p[2]]});
                 const float cap = std::abs(vn) / (dt * std::max(wMax, 1e-30f));
