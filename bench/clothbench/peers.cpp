@@ -29,7 +29,7 @@
 namespace clothtear::bench {
 
 #if !CLOTHBENCH_HAVE_BULLET
-PeerResult runBulletCloth(int, double, int, int) {
+PeerResult runBulletCloth(int, double, int, int, int) {
     PeerResult r;
     r.note = "Bullet not found at configure time (apt-get install libbullet-dev, then reconfigure)";
     return r;
@@ -107,6 +107,44 @@ Ours measureOurs(int n, int threads, int substeps) {
     return o;
 }
 
+// Bullet's default cloth is fast because it is soft: at 128 x 128 its worst link hangs 80% past its
+// rest length. A Bullet user who wants the cloth to hold (as ours does, within the Provot limit + 5%)
+// raises the link solver's passes per sub-step; this finds how many it takes (doubling 1, 2, 4, ...
+// up to 64) at N = 32, 64, 128 and times Bullet there. 256 is left out: Bullet's default already
+// takes 22 ms per sub-step there and each doubling about doubles it.
+void compareAtEqualStretch(const BenchOptions& opt, const std::vector<std::pair<int, double>>& ours) {
+    const double allowed = 1.05 * double(Settings{}.limit.maxStretch);
+    std::printf("\n  Bullet at equal stretch: position iterations raised until its worst link is within our\n"
+                "  limit + 5%% (stretch <= %.3f) at rest; ours as above, 1 thread\n",
+                allowed);
+    std::printf("  %5s %10s %12s %10s %9s %9s %12s\n", "N", "ours 1t", "B iterations", "Bullet", "B mean",
+                "B worst", "B/ours1t");
+    Csv csv(opt.out + "/peers_equal_stretch.csv",
+            {"n", "ours_ms_1t", "bullet_position_iterations", "bullet_ms", "bullet_mean_stretch",
+             "bullet_worst_stretch", "within_limit", "bullet_over_ours_1t"});
+    setThreads(1);
+    for (const auto& [n, oursMs] : ours) {
+        if (n > 128)
+            continue;
+        const int substeps = n >= 128 ? 100 : 300;
+        PeerResult b;
+        for (int it = 1; it <= 64; it *= 2) {
+            b = runBulletCloth(n, 1.5, std::max(10, substeps / 4), 3, it);
+            if (!b.available || b.worstStretch <= allowed)
+                break;
+        }
+        if (!b.available)
+            return;
+        const bool within = b.worstStretch <= allowed;
+        csv.row(n, oursMs, b.positionIterations, b.msPerSubstep, b.meanStretch, b.worstStretch, within ? 1 : 0,
+                b.msPerSubstep / oursMs);
+        std::printf("  %5d %10.4f %12d %10.4f %9.4f %9.4f %11.1fx%s\n", n, oursMs, b.positionIterations,
+                    b.msPerSubstep, b.meanStretch, b.worstStretch, b.msPerSubstep / oursMs,
+                    within ? "" : " (still over at 64 iterations)");
+        std::fflush(stdout);
+    }
+}
+
 } // namespace
 
 int runPeers(const BenchOptions& opt) {
@@ -134,6 +172,7 @@ int runPeers(const BenchOptions& opt) {
     std::printf("  %5s %10s %10s %9s %9s %10s %10s %10s %9s %9s %8s %8s\n", "N", "ours 1t", "ours Nt", "mean",
                 "worst", "bound 1t", "Bullet", "B mean", "B worst", "B/ours1t", "B/oursNt", "ours/bnd");
     std::string bulletNote;
+    std::vector<std::pair<int, double>> ones; // (N, our ms per sub-step on 1 thread)
     for (int n : opt.quick ? std::vector<int>{32, 64} : std::vector<int>{32, 64, 128, 256}) {
         const int substeps = n >= 256 ? 40 : n >= 128 ? 100 : 300;
         const Ours o = measureOurs(n, threads, substeps);
@@ -153,6 +192,7 @@ int runPeers(const BenchOptions& opt) {
                     b.available ? b.msPerSubstep / o.msPerSubstep[0] : NAN,
                     b.available ? b.msPerSubstep / o.msPerSubstep[1] : NAN, o.msPerSubstep[0] / bound1);
         std::fflush(stdout);
+        ones.emplace_back(n, o.msPerSubstep[0]);
         s1.points.emplace_back(n, o.msPerSubstep[0]);
         sN.points.emplace_back(n, o.msPerSubstep[1]);
         sbound.points.emplace_back(n, bound1);
@@ -160,6 +200,8 @@ int runPeers(const BenchOptions& opt) {
             sb.points.emplace_back(n, b.msPerSubstep);
     }
     std::printf("  (%s)\n", bulletNote.c_str());
+    if (!ones.empty())
+        compareAtEqualStretch(opt, ones);
     plot.series = {s1, sN, sb, sbound};
     plot.notes = {opt.commandLine, machineDescription() + "; " + bulletNote};
     writeSvg(plot, opt.out + "/peers.svg");

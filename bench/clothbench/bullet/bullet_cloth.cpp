@@ -14,7 +14,8 @@
 
 namespace clothtear::bench {
 
-PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int repetitions) {
+PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int repetitions,
+                          int positionIterations) {
     PeerResult r;
     r.available = true;
     r.note = "Bullet " + std::to_string(BT_BULLET_VERSION);
@@ -36,6 +37,9 @@ PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int 
     for (int i = 0; i < cloth->m_nodes.size(); ++i)
         if (cloth->m_nodes[i].m_x.y() > 1 - 1e-4f)
             cloth->setMass(i, 0); // top row fixed
+    if (positionIterations > 0)
+        cloth->m_cfg.piterations = positionIterations;
+    r.positionIterations = cloth->m_cfg.piterations;
     cloth->randomizeConstraints();
     world->addSoftBody(cloth);
     const btScalar dt = 1.f / 600.f; // 10 sub-steps per 1/60 s frame
