@@ -19,6 +19,7 @@ struct BenchOptions {
     double stressSeconds = 120;    // stress mode: simulated seconds of the randomized run
     int stressResolution = 128;    // stress mode: particles per side
     int threads = 1;               // OpenMP threads for the timed runs of every mode but `peers`
+    std::string accuracyScene;     // accuracy mode: only this scene ("" = every scene)
     std::string commandLine;       // how this run was started, written into every plot
 };
 

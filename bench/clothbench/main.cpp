@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
     app.add_flag("--quick", o.quick, "Fewer points and shorter runs (smoke run)");
     app.add_option("--threads", o.threads, "OpenMP threads for the timed runs (peers: both 1 and this)")
         ->check(CLI::Range(1, 64));
+    app.add_option("--accuracy-scene", o.accuracyScene, "Accuracy mode: only this scene (swing, curtain, drop, ...)");
     app.add_option("--seed", o.seed, "Stress mode: seed of the random interaction script");
     app.add_option("--stress-seconds", o.stressSeconds,
                    "Stress mode: simulated seconds (the script depends on the seed only)")
