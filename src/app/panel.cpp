@@ -232,7 +232,10 @@ void drawStatsPane(AppState& st, const World& world) {
 void drawHelpOverlay(AppState& st) {
     if (!st.showHelp) return;
     const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always,
+    // Centred in the view right of the panel: centred on the whole window it lay under the panel,
+    // and a click on the panel brought the panel to the front, over the help's key column.
+    const float left = st.showPanel ? kPanelWidth : 0.f;
+    ImGui::SetNextWindowPos(ImVec2(left + (io.DisplaySize.x - left) * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.92f);
     ImGui::Begin("Controls (F1)", &st.showHelp, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);

@@ -125,7 +125,8 @@ bool parameterGroups(Settings& s, bool unsafe) {
             group = g;
             std::string title(g);
             title[0] = char(std::toupper(static_cast<unsigned char>(title[0])));
-            open = ImGui::TreeNode(title.c_str());
+            // The whole row opens the group, not only its label (people click beside short names).
+            open = ImGui::TreeNodeEx(title.c_str(), ImGuiTreeNodeFlags_SpanAvailWidth);
         }
         if (open) rebuild |= paramWidget(s, p, unsafe) == ParamEdit::Committed && p.rebuildsCloth;
     }
