@@ -247,6 +247,20 @@ TEST_F(ObjImport, NonManifoldEdgeLoadsButBuildClothRefusesIt) {
     const Result<Cloth> c = buildCloth(r.value, 0.2f);
     ASSERT_FALSE(c.ok());
     EXPECT_NE(c.error.find("non-manifold"), std::string::npos) << c.error;
+    EXPECT_NE(c.error.find("between vertices 1 and 2"), std::string::npos) << c.error;
+}
+
+// The message names the shared edge even when the third face was flipped to be counter-clockwise in
+// UV space (the corners are re-ordered; the message once took the edge from the unflipped order and
+// named 2-4 here).
+TEST_F(ObjImport, NonManifoldMessageNamesTheEdgeOfAFlippedFace) {
+    const Result<MeshData> r = load("fin2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 2 1 4\n");
+    ASSERT_TRUE(r.ok()) << r.error;
+    const Result<Cloth> c = buildCloth(r.value, 0.2f);
+    ASSERT_FALSE(c.ok());
+    const bool named = c.error.find("between vertices 1 and 2 ") != std::string::npos ||
+                       c.error.find("between vertices 2 and 1 ") != std::string::npos;
+    EXPECT_TRUE(named) << c.error;
 }
 
 // ---- bad inputs: one clear line naming the file (and the line where there is one) -------------------

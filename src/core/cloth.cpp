@@ -153,14 +153,17 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
     c.triangles.reserve(mesh.triangles.size());
     for (size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
         Triangle t{};
+        std::array<Index, 3> vertex{}; // the mesh's own vertex of each corner, for messages
         for (int i = 0; i < 3; ++i) {
-            t.p[i] = remap[mesh.triangles[ti][i]];
+            vertex[i] = mesh.triangles[ti][i];
+            t.p[i] = remap[vertex[i]];
             t.uv[i] = mesh.cornerUVs[ti][i];
         }
         // Keep every triangle counter-clockwise in UV space (flipped OBJ faces are re-ordered).
         if (uvArea(t.uv[0], t.uv[1], t.uv[2]) < 0) {
             std::swap(t.p[1], t.p[2]);
             std::swap(t.uv[1], t.uv[2]);
+            std::swap(vertex[1], vertex[2]);
         }
         t.restArea = triangleArea(c.rest[t.p[0]], c.rest[t.p[1]], c.rest[t.p[2]]);
         const Index triIndex = static_cast<Index>(c.triangles.size());
@@ -178,8 +181,8 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
             else if (topo.tri[1] == kNone) topo.tri[1] = triIndex;
             else
                 return Result<Cloth>::failure("mesh: non-manifold edge between vertices " +
-                                              std::to_string(mesh.triangles[ti][i] + 1) + " and " +
-                                              std::to_string(mesh.triangles[ti][(i + 1) % 3] + 1) +
+                                              std::to_string(vertex[i] + 1) + " and " +
+                                              std::to_string(vertex[(i + 1) % 3] + 1) +
                                               " (shared by 3 or more triangles, face " + std::to_string(ti + 1) + ")");
             t.s[i] = it->second;
         }
