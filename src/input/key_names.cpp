@@ -29,10 +29,10 @@ constexpr int kF1 = 290; // F1..F25 are consecutive
 
 std::string keyName(int code) {
     if ((code >= 'A' && code <= 'Z') || (code >= '0' && code <= '9')) return std::string(1, char(code));
-    if (code >= kF1 && code < kF1 + 25) return "F" + std::to_string(code - kF1 + 1);
+    if (code >= kF1 && code < kF1 + 25) return std::string("F").append(std::to_string(code - kF1 + 1));
     for (const NamedKey& k : kNamedKeys)
         if (k.code == code) return k.name;
-    return "KEY_" + std::to_string(code);
+    return std::string("KEY_").append(std::to_string(code));
 }
 
 int keyFromName(std::string_view name) {
