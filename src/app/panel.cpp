@@ -194,7 +194,8 @@ void drawStatsPane(AppState& st, const World& world) {
                                              ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     const Stats& s = st.stats;
     const Cloth& c = world.cloth;
-    ImGui::Text("FPS %.1f   sim %.1f frames/s", s.fps, s.simFps);
+    if (s.fps > 0) ImGui::Text("FPS %.1f   sim %.1f frames/s", s.fps, s.simFps);
+    else ImGui::TextDisabled("FPS --   (timings come every half second)"); // not "FPS 0.0" at start
     if (st.paused) ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "paused");
     else if (st.clock.slowedDown)
         ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "slower than real time (%.0f%%)",
