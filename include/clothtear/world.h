@@ -27,6 +27,11 @@ struct StepProfile {
     std::array<uint64_t, int(Phase::Count)> runs{}; // how often each phase was entered
     uint64_t substeps = 0;
     uint64_t solverIterations = 0; // implicit Euler: conjugate-gradient iterations, summed
+    // Length limit not converged: sub-steps whose last allowed pass (limit.iterations) still
+    // corrected springs, and those springs, summed. The cloth then ends the sub-step stretched past
+    // the limit (e.g. a fine cloth in wind at few sub-steps: README "Status and known gaps").
+    uint64_t limitCapped = 0;
+    uint64_t limitCappedSprings = 0;
     void reset() { *this = StepProfile{}; }
 };
 

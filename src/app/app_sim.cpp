@@ -109,6 +109,9 @@ void App::updateStats(double now) {
         total += s.phaseMs[p];
     }
     s.msPerStep = total;
+    const uint64_t substeps = world_.profile.substeps - s.profileAtStart.substeps;
+    s.limitCappedShare =
+        substeps ? double(world_.profile.limitCapped - s.profileAtStart.limitCapped) / double(substeps) : 0.0;
     s.sampleStart = now;
     s.frames = 0;
     s.profileAtStart = world_.profile;

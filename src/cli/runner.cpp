@@ -136,6 +136,10 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"ms_per_step", w.steps ? totalMs / double(w.steps) : 0.0},
         {"wall_seconds", wallSeconds},
         {"phases", phases},
+        // Sub-steps whose length limit was still correcting at its last pass, and those springs.
+        {"limit_capped_substeps", w.profile.limitCapped},
+        {"limit_capped_springs", w.profile.limitCappedSprings},
+        {"substeps_run", w.profile.substeps},
         {"tears", tears},
         {"tears_total", w.tearLog.total()},
         {"tear_events", events},

@@ -975,6 +975,7 @@ void World::phaseLimit(float dt) {
             }
     };
 
+    int cappedSprings = 0; // springs the last allowed pass still corrected (thread 0 writes it)
     parallelRegion(std::max(ns, n), threads, [&](int t, int nt) {
         // ---- strain scan: every spring once, most of them with one compare and no square root
         std::vector<Index>& list = active[t];
@@ -1069,12 +1070,17 @@ void World::phaseLimit(float dt) {
             int corrected = 0;
             for (int k = 0; k < nt; ++k) corrected += work[k];
             if (corrected == 0) break;
+            if (t == 0 && pass + 1 == L.iterations) cappedSprings = corrected;
         }
         // Springs still listed (iteration cap, exempt candidates) leave their lists.
         parallelBarrier(nt);
         for (Index i : list) listed[i] = 0;
     });
 
+    if (cappedSprings > 0) {
+        profile.limitCapped++;
+        profile.limitCappedSprings += uint64_t(cappedSprings);
+    }
     // Tear candidates, merged in thread order (deterministic).
     scratch_.tearCandidates.clear();
     for (auto& f : found) scratch_.tearCandidates.insert(scratch_.tearCandidates.end(), f.begin(), f.end());
