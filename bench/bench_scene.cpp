@@ -14,18 +14,9 @@ namespace clothtear::bench {
 
 StabilityReport stability(const World& world) {
     const Cloth& c = world.cloth;
-    const MaterialSettings& m = world.settings.material;
     const double dt = double(world.settings.time.frameDt) / world.settings.time.substeps;
-    std::vector<double> k(c.particleCount(), 0.0), kd(c.particleCount(), 0.0);
-    auto add = [&](const std::vector<Spring>& springs, double ks, double kds) {
-        for (const Spring& s : springs)
-            for (Index p : {s.a, s.b}) {
-                k[p] += ks * s.weight;
-                kd[p] += kds * s.weight;
-            }
-    };
-    add(c.springs, m.stretchStiffness, m.stretchDamping);
-    add(c.bends, m.bendStiffness, m.bendDamping);
+    std::vector<double> k, kd;
+    springSumsPerParticle(c, world.settings.material, k, kd);
     StabilityReport r;
     for (Index p = 0; p < c.particleCount(); ++p) {
         if (c.invMass[p] == 0.f) continue;

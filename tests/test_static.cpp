@@ -39,24 +39,6 @@ World springCurtain(int resolution, std::vector<std::string> extra = {}) {
     return w;
 }
 
-// Sag of the bottom-centre particle(s) (two when the resolution is even), m.
-template <class V> double bottomCentreSag(const World& w, const std::vector<V>& x) {
-    double bottom = 1e30;
-    for (const Vec3d& r : w.cloth.rest)
-        bottom = std::min(bottom, r.y());
-    const double spacing = w.settings.cloth.width / (w.settings.cloth.resolutionX - 1);
-    double sum = 0, restSum = 0;
-    int count = 0;
-    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
-        const Vec3d& r = w.cloth.rest[p];
-        if (r.y() > bottom + 1e-9 || std::abs(r.x()) > 0.5 * spacing + 1e-9)
-            continue;
-        sum += double(x[p].y());
-        restSum += r.y();
-        ++count;
-    }
-    return count ? (restSum - sum) / count : 0.0;
-}
 
 // =========================================================================================== [SCALAR]
 
@@ -122,7 +104,7 @@ TEST(StaticSolve, SettledCurtainMatchesTheStaticSolve) {
             worst = std::max(worst, d);
         }
         const double rms = std::sqrt(sum / double(w.cloth.particleCount()));
-        const double sag = bottomCentreSag(w, s.x);
+        const double sag = bottomCentreSag(w.cloth, w.settings.cloth, s.x);
         EXPECT_GT(sag, 0.03) << "the springs must carry a visible load";
         // Float state: round-off is about 1e-7 m; what is left of the motion after 3 s is smaller.
         EXPECT_LT(rms, 1e-4 * sag) << integrator;
@@ -141,7 +123,7 @@ TEST(StaticSolve, SagConvergesUnderMeshRefinement) {
         World w = springCurtain(res);
         const StaticSolveResult s = solveStatic(w.cloth, w.settings, w.cloth.x);
         ASSERT_TRUE(s.converged) << res << ": " << s.error << " residual " << s.residual;
-        sag.push_back(bottomCentreSag(w, s.x));
+        sag.push_back(bottomCentreSag(w.cloth, w.settings.cloth, s.x));
         RecordProperty("static_sag_" + std::to_string(res), std::to_string(sag.back()));
     }
     EXPECT_GT(sag[0], 0.03);

@@ -14,23 +14,6 @@
 namespace clothtear::bench {
 namespace {
 
-template <class V> double bottomCentreSag(const World& w, const std::vector<V>& x) {
-    double bottom = 1e30;
-    for (const Vec3d& r : w.cloth.rest)
-        bottom = std::min(bottom, r.y());
-    const double spacing = w.settings.cloth.width / (w.settings.cloth.resolutionX - 1);
-    double sum = 0, restSum = 0;
-    int count = 0;
-    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
-        const Vec3d& r = w.cloth.rest[p];
-        if (r.y() > bottom + 1e-9 || std::abs(r.x()) > 0.5 * spacing + 1e-9)
-            continue;
-        sum += double(x[p].y());
-        restSum += r.y();
-        ++count;
-    }
-    return count ? (restSum - sum) / count : 0.0;
-}
 
 } // namespace
 
@@ -55,7 +38,7 @@ int runStatic(const BenchOptions& opt) {
         auto t0 = std::chrono::steady_clock::now();
         const StaticSolveResult st = solveStatic(w0.cloth, w0.settings, w0.cloth.x);
         const double solveSeconds = secondsSince(t0);
-        const double staticSag = bottomCentreSag(w0, st.x);
+        const double staticSag = bottomCentreSag(w0.cloth, w0.settings.cloth, st.x);
         if (firstStatic == 0)
             firstStatic = staticSag;
         std::printf("  %3dx%-3d static sag %.6f m (%d Newton iterations, residual %.1e, %.2f s)%s\n", res,
@@ -84,7 +67,7 @@ int runStatic(const BenchOptions& opt) {
             for (int f = 0; f < 5 * 60; ++f)
                 w.step();
             const double settle = secondsSince(t0);
-            const double sag = bottomCentreSag(w, w.cloth.x);
+            const double sag = bottomCentreSag(w.cloth, w.settings.cloth, w.cloth.x);
             double sum = 0;
             for (Index p = 0; p < w.cloth.particleCount(); ++p)
                 sum += (w.cloth.x[p].cast<double>() - st.x[p]).squaredNorm();

@@ -11,6 +11,9 @@
 #include "clothtear/cloth.h"
 #include "clothtear/settings.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,5 +36,26 @@ struct StaticSolveResult {
 // Starts from `start` (usually cloth.x). Uses material stiffnesses and gravity from `settings`.
 StaticSolveResult solveStatic(const Cloth& cloth, const Settings& settings, std::span<const Vec3> start,
                               const StaticSolveOptions& options = {});
+
+// Sag of a grid cloth at the bottom-centre particle(s) (two when the resolution is even): how far the
+// positions `x` (float dynamics or double static solve) hang below the rest positions there, m;
+// NaN when no particle is there. The measure of the static and refinement checks (clothbench
+// `static`, tests/test_static.cpp, tests/test_physics.cpp).
+template <class V>
+double bottomCentreSag(const Cloth& cloth, const ClothSettings& grid, const std::vector<V>& x) {
+    double bottom = std::numeric_limits<double>::infinity();
+    for (const Vec3d& r : cloth.rest) bottom = std::min(bottom, r.y());
+    const double spacing = double(grid.width) / (grid.resolutionX - 1);
+    double sum = 0, restSum = 0;
+    int count = 0;
+    for (Index p = 0; p < cloth.particleCount(); ++p) {
+        const Vec3d& r = cloth.rest[p];
+        if (r.y() > bottom + 1e-9 || std::abs(r.x()) > 0.5 * spacing + 1e-9) continue;
+        sum += double(x[p].y());
+        restSum += r.y();
+        ++count;
+    }
+    return count ? (restSum - sum) / count : std::numeric_limits<double>::quiet_NaN();
+}
 
 } // namespace clothtear

@@ -148,6 +148,12 @@ struct StepScratch {
 // Infinite for the reference integrators.
 double stableStepEstimate(const Cloth& cloth, const Settings& settings);
 
+// Per particle, the summed stiffness k (N/m) and damping kd (N s/m) of the structural and
+// bend-shear springs touching it, as the material asks for them (before the guard caps any): the
+// Gershgorin row sums behind stableStepEstimate. Resizes k and kd to the particle count.
+void springSumsPerParticle(const Cloth& cloth, const MaterialSettings& material, std::vector<double>& k,
+                           std::vector<double>& kd);
+
 class World {
 public:
     Settings settings;

@@ -17,12 +17,10 @@
 
 namespace clothtear {
 
-double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
-    if (!isExplicit(settings.time.integrator))
-        return std::numeric_limits<double>::infinity();
-    const size_t n = cloth.particleCount();
-    std::vector<double> k(n, 0.0), kd(n, 0.0);
-    const MaterialSettings& m = settings.material;
+void springSumsPerParticle(const Cloth& cloth, const MaterialSettings& m, std::vector<double>& k,
+                           std::vector<double>& kd) {
+    k.assign(cloth.particleCount(), 0.0);
+    kd.assign(cloth.particleCount(), 0.0);
     auto add = [&](const std::vector<Spring>& springs, double ks, double kds) {
         for (const Spring& s : springs)
             for (Index p : {s.a, s.b}) {
@@ -32,6 +30,14 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
     };
     add(cloth.springs, m.stretchStiffness, m.stretchDamping);
     add(cloth.bends, m.bendStiffness, m.bendDamping);
+}
+
+double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
+    if (!isExplicit(settings.time.integrator))
+        return std::numeric_limits<double>::infinity();
+    const size_t n = cloth.particleCount();
+    std::vector<double> k, kd;
+    springSumsPerParticle(cloth, settings.material, k, kd);
     double best = std::numeric_limits<double>::infinity();
     for (Index p = 0; p < n; ++p) {
         const double w = cloth.invMass[p];
