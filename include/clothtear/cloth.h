@@ -62,8 +62,9 @@ struct Cloth {
     std::vector<Triangle> triangles;
 
     uint64_t topologyRevision = 0; // bumped on every structural change (renderers re-upload indices)
-    uint64_t massRevision = 0;     // bumped whenever an inverse mass is set (pins, tears, density):
-                                   // the step's per-spring stability caps follow it at once
+    uint64_t massRevision = 0;     // a new process-wide unique value whenever an inverse mass is set
+                                   // (pins, tears, density): the step's caches follow it at once, and
+                                   // never take one cloth for another (src/core/step/revisions.h)
     float density = 0.2f;          // kg/m^2 used for mass lumping
     // m. A basic tear halves the torn spring; springs shorter than this are not halved again (a tear
     // front that keeps halving the same corner makes slivers of vanishing mass). Set by buildCloth

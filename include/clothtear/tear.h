@@ -5,6 +5,7 @@
 #include "clothtear/settings.h"
 #include "clothtear/tear_events.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,15 @@ struct TearCandidate {
     Index spring;  // structural spring index at scan time
     float strain;  // (len - rest) / rest at scan time
 };
+
+// The one rule for the strain at which a structural spring tears (Onal 3.2.1-3.2.3), read by the
+// strain scan (which lists and exempts candidates) and by the tear module (which picks the mode).
+// Springs touching a weak point or a one-point connection tear from the lower of those thresholds,
+// or from tear.threshold if that is lower still; any other spring from tear.threshold.
+inline float weakEndThreshold(const TearSettings& T) { return std::min(T.weakThreshold, T.onePointThreshold); }
+inline float tearStrainFor(const TearSettings& T, bool weakEnd) {
+    return weakEnd ? std::min(weakEndThreshold(T), T.threshold) : T.threshold;
+}
 
 struct TearContext {
     const TearSettings& settings;

@@ -1,6 +1,7 @@
 // Building the cloth from a mesh, mass lumping, and the bend-shear spring bookkeeping.
 #include "clothtear/cloth.h"
 
+#include "step/revisions.h"
 #include "tear_topology.h"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ void refreshSpringWeight(Cloth& cloth, Index s) {
 void Cloth::refreshInvMass(Index p) {
     const double m = particleMass(p);
     invMass[p] = (flags[p] & kPinned) || m <= 0.0 ? 0.0f : static_cast<float>(1.0 / m);
-    ++massRevision;
+    massRevision = nextUniqueRevision();
 }
 
 void Cloth::setPinned(Index p, bool on) {

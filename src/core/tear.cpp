@@ -282,7 +282,7 @@ bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force, float scanSt
             return true;
     bool weakEnd = false;
     for (Index p : {a, b})
-        if ((c.flags[p] & (kWeak | kHinge)) && (force || strain >= std::min(T.weakThreshold, T.onePointThreshold))) {
+        if ((c.flags[p] & (kWeak | kHinge)) && (force || strain >= weakEndThreshold(T))) {
             weakEnd = true;
             if ((c.flags[p] & kWeak) && weakTear(c, p, s, strain, ctx)) return true;
         }

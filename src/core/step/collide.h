@@ -2,7 +2,7 @@
 #pragma once
 #include "clothtear/cloth.h"
 #include "clothtear/settings.h"
-#include "clothtear/world.h"
+#include "step_state.h"
 
 #include <vector>
 

@@ -1,5 +1,5 @@
-// The inner loops of the step's spring phase and strain scan, over flat arrays (world.cpp
-// [SPRINGS], [LIMIT]).
+// The inner loops of the step's spring phase and strain scan, over flat arrays (springs.cpp,
+// limit.cpp).
 //
 // Layout. Particles are read from a packed copy, 32 bytes each: position (x, y, z, 0) and velocity
 // (x, y, z, 0), aligned, so one particle is two aligned loads in one cache line. Forces go to
@@ -9,7 +9,7 @@
 // share one instruction each, which is what bounds a scalar loop (a square root and a division per
 // spring). Other targets use the scalar loop, with the same formula.
 #pragma once
-#include "clothtear/world.h" // PackedParticle
+#include "step_state.h" // PackedParticle
 
 #include <cmath>
 #include <cstddef>
@@ -151,7 +151,7 @@ namespace clothtear {
 // away moves back onto that sphere. Positions and velocities are read from `packed` (x and v after
 // integration; anchors are pinned, so nothing moves them here) and the moved particles are written
 // to x and v. Particles with cut[p] set are skipped (cut may be null). Inelastic velocity fix as in
-// the Jacobi passes (moveParticle in world.cpp): with the move delta = s d (d = x_p - x_a,
+// the Jacobi passes (addCorrection in limit_kernels.h): with the move delta = s d (d = x_p - x_a,
 // s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0, is cancelled up to |delta| / dt:
 //   v += delta * min(1 / dt, (v.d) / (-s |d|^2)).
 // Without velocityFix (Verlet, whose velocity is the position change (x - x_prev) / dt) the move

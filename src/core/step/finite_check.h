@@ -1,4 +1,4 @@
-// Non-finite detection at the phase boundaries of a sub-step (world.cpp [STEP]): which value went
+// Non-finite detection at the phase boundaries of a sub-step (step.cpp): which value went
 // NaN or infinite first, named by what it is and its index, so a blow-up is traced to the phase
 // that made it instead of being found a frame later somewhere in the cloth.
 #pragma once

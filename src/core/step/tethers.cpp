@@ -24,7 +24,7 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     }
     t.cut.assign(n, 0);
     t.moved.assign(n, 0);
-    t.stamp = 0;
+    t.passStamp = 0;
     t.listed.assign(cloth.springs.size(), 0);
 
     t.anchor.assign(n, kNone);

@@ -25,9 +25,10 @@
 
 namespace clothtear {
 
-// Sparsity pattern and work arrays, rebuilt when the topology or the pinned set changes.
+// Sparsity pattern and work arrays, built on the first step with this cache. The step starts a
+// fresh cache when the topology or the pinned set changes (step_state.h, ImplicitCacheSlot).
 struct ImplicitEulerCache {
-    uint64_t key = ~uint64_t(0);
+    bool built = false;
     std::vector<int> row; // per particle: first unknown (3 per free particle), -1 if pinned
     Eigen::SparseMatrix<double, Eigen::RowMajor>
         A; // 3 nf x 3 nf (nf free particles), symmetric, full storage

@@ -1,8 +1,8 @@
-// What the two reference integrators (implicit_euler.h, xpbd.h) read for one sub-step. world.cpp
-// fills it; the integrators then move every free particle and leave pinned ones alone.
+// What the two reference integrators (implicit_euler.h, xpbd.h) read for one sub-step.
+// integrate_reference.cpp fills it; the integrators then move every free particle and leave pinned ones alone.
 //
 // Unlike the explicit integrators these see each spring's full stiffness: the stability guard
-// (world.cpp [FORCES]) exists only because explicit integration of a stiff spring explodes, and
+// (springs.cpp) exists only because explicit integration of a stiff spring explodes, and
 // both references are stable at any step.
 #pragma once
 #include "clothtear/cloth.h"

@@ -23,7 +23,7 @@
 // shortest) rather than exact geodesics: any path gives a valid tether, a longer one a looser one.
 #pragma once
 #include "clothtear/cloth.h"
-#include "clothtear/world.h"
+#include "step_state.h"
 
 #include <vector>
 

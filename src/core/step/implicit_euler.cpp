@@ -5,8 +5,6 @@
 #define EIGEN_DONT_PARALLELIZE
 #include "implicit_euler.h"
 
-#include "clothtear/world.h"
-
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 #include <cmath>
@@ -16,22 +14,6 @@ namespace {
 
 using Mat3 = Eigen::Matrix3d;
 using V3 = Eigen::Vector3d;
-
-uint64_t mix(uint64_t h, uint64_t v) {
-    h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    return h * 0xbf58476d1ce4e5b9ull;
-}
-
-uint64_t cacheKey(const Cloth& c) {
-    uint64_t h = mix(c.topologyRevision, c.particleCount());
-    for (uint64_t w : {uint64_t(uintptr_t(c.springs.data())), uint64_t(c.springs.size()),
-                       uint64_t(uintptr_t(c.bends.data())), uint64_t(c.bends.size())})
-        h = mix(h, w);
-    for (Index p = 0; p < c.particleCount(); ++p)
-        if (c.invMass[p] == 0.f)
-            h = mix(h, p);
-    return h;
-}
 
 // Offset in A's values of entry (r, col) (row-major: row r's entries are sorted by column).
 int slotOf(const Eigen::SparseMatrix<double, Eigen::RowMajor>& A, int r, int col) {
@@ -96,11 +78,10 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
                        ImplicitEulerCache& C) {
     const size_t n = cloth.particleCount();
     const double dt = in.dt;
-    const uint64_t key = cacheKey(cloth);
     Eigen::SparseMatrix<double, Eigen::RowMajor>& A = C.A;
-    if (key != C.key) {
+    if (!C.built) {
         buildPattern(cloth, in.kinds, C, A);
-        C.key = key;
+        C.built = true;
     }
     const int unknowns = int(A.rows());
     double* val = A.valuePtr();
@@ -184,16 +165,5 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
         cloth.x[p] = (cloth.x[p].cast<double>() + dt * v).cast<float>();
     }
 }
-
-ImplicitCacheHolder::ImplicitCacheHolder() = default;
-ImplicitCacheHolder::~ImplicitCacheHolder() = default;
-ImplicitCacheHolder::ImplicitCacheHolder(const ImplicitCacheHolder&) {}
-ImplicitCacheHolder& ImplicitCacheHolder::operator=(const ImplicitCacheHolder& other) {
-    if (this != &other)
-        cache.reset();
-    return *this;
-}
-ImplicitCacheHolder::ImplicitCacheHolder(ImplicitCacheHolder&&) noexcept = default;
-ImplicitCacheHolder& ImplicitCacheHolder::operator=(ImplicitCacheHolder&&) noexcept = default;
 
 } // namespace clothtear

@@ -1,0 +1,160 @@
+// The explicit integrators (semi-implicit Euler, forward Euler, Verlet) over the particles, summing
+// the per-thread force buffers; and the kinematic drivers.
+#include "parallel.h"
+#include "phases.h"
+
+#include <algorithm>
+
+namespace clothtear {
+
+void moveDrivers(const StepContext& ctx, Cloth& cloth, StepState& state) {
+    for (const Driver& d : *ctx.drivers)
+        for (Index p : d.particles) {
+            cloth.xPrev[p] = cloth.x[p];
+            cloth.x[p] += d.velocity * ctx.dt;
+            cloth.v[p] = d.velocity;
+            if (p < state.packed.size())
+                for (int k = 0; k < 3; ++k) { // the strain scan and the tethers read these
+                    state.packed[p].x[k] = cloth.x[p][k];
+                    state.packed[p].v[k] = cloth.v[p][k];
+                }
+        }
+}
+
+namespace {
+
+struct IntegrateParams {
+    Vec3 g;            // m/s^2
+    float dragPerMass; // 1/s
+    float keep;        // Keserica: velocity kept per step
+    float verletKeep;  // Verlet: 1 - friction
+    bool verletStart;  // Verlet: first step since a rebuild or a change of integrator
+    Vec3* verletKick;  // Verlet: per particle, half the last step's velocity change (a dt / 2)
+    float dt;
+};
+
+// Particles [b, e), whose forces are in the NB buffers `buf` (NB < 0: nb of them): sums and clears
+// those entries, then integrates. The packed copy holds x and v as phaseSprings read them (nothing
+// moves a particle in between) and gets the new ones (the strain scan and the tethers read them).
+template <Integrator I, int NB>
+void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, const IntegrateParams& P, Vec3* x,
+                    Vec3* v, Vec3* xPrev, PackedParticle* packed, const float* invMass) {
+    using V4 = Eigen::Vector4f;
+    const V4 g(P.g.x(), P.g.y(), P.g.z(), 0.f);
+    const int count = NB >= 0 ? NB : nb;
+    for (size_t p = b; p < e; ++p) {
+        V4 f = V4::Zero();
+        for (int k = 0; k < count; ++k) {
+            f += buf[k][p];
+            buf[k][p].setZero();
+        }
+        const float w = invMass[p];
+        if (w == 0.f) continue;
+        Eigen::Map<V4, Eigen::Aligned16> px(packed[p].x), pv(packed[p].v);
+        V4 xn = px, vn = pv;
+        const V4 a = g - P.dragPerMass * vn + f * w;
+        if constexpr (I == Integrator::SemiImplicitEuler) {
+            vn = (vn + a * P.dt) * P.keep;
+            xn += vn * P.dt;
+        } else if constexpr (I == Integrator::ForwardEuler) {
+            xn += vn * P.dt;
+            vn = (vn + a * P.dt) * P.keep;
+        } else {
+            // Velocity form, second order. The state is u = (x_n - x_{n-1}) / dt as computed (not
+            // recomputed from rounded positions) plus the half kick a_{n-1} dt / 2, so that v = u +
+            // kick is the velocity at t_n to second order (the springs' damping and the air read
+            // it; with u alone they made the method first order). Position form in float quantizes
+            // u to ulp(x) / dt each step and drops a dt^2 below half an ulp: at dt = 1/3840 s its
+            // error grew as dt^-2 (bench/README.md). Every phase that moves x moves v with it
+            // (limit, tethers: v += delta / dt; collisions and impulses already did). The first
+            // step (P.verletStart) takes kick = a dt / 2: the Taylor step x + v dt + a dt^2 / 2.
+            const Vec3& k = P.verletKick[p];
+            const V4 kickPrev = P.verletStart ? V4(a * (0.5f * P.dt)) : V4(k.x(), k.y(), k.z(), 0.f);
+            const V4 step = (P.verletKeep * P.keep * P.dt) * (vn - kickPrev) + a * (P.dt * P.dt);
+            const V4 kick = a * (0.5f * P.dt);
+            P.verletKick[p] = kick.head<3>();
+            xPrev[p] = xn.head<3>();
+            vn = step * (1.f / P.dt) + kick;
+            xn += step;
+        }
+        px = xn;
+        pv = vn;
+        x[p] = xn.head<3>();
+        v[p] = vn.head<3>();
+    }
+}
+
+// One chunk of particles, split where the set of force buffers that cover it changes.
+template <Integrator I>
+void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Vec3* xPrev, PackedParticle* packed,
+                         const float* invMass, std::vector<std::vector<Eigen::Vector4f>>& acc,
+                         const std::array<size_t, 2>* ranges) {
+    std::vector<size_t> cuts{c.begin, c.end};
+    for (size_t k = 0; k < acc.size(); ++k)
+        for (size_t edge : ranges[k])
+            if (edge > c.begin && edge < c.end) cuts.push_back(edge);
+    std::sort(cuts.begin(), cuts.end());
+    for (size_t s = 0; s + 1 < cuts.size(); ++s) {
+        const size_t b = cuts[s], e = cuts[s + 1];
+        if (b == e) continue;
+        Eigen::Vector4f* buf[kMaxThreadSlots];
+        int nb = 0;
+        for (size_t k = 0; k < acc.size(); ++k)
+            if (ranges[k][0] <= b && ranges[k][1] >= e) buf[nb++] = acc[k].data();
+        switch (nb) {
+        case 0: integrateRange<I, 0>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
+        case 1: integrateRange<I, 1>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
+        case 2: integrateRange<I, 2>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
+        default: integrateRange<I, -1>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
+        }
+    }
+}
+
+} // namespace
+
+// a = external acceleration (gravity, air drag) + (sum of spring and wind forces) / m.
+//   semi-implicit Euler (Onal 2.1):  v += a dt;  x += v dt
+//   forward Euler:                   x += v dt;  v += a dt
+//   Verlet (Keserica 2.2.1):         x' = x + (1 - f)(x - x_prev) + a dt^2;  v = (x' - x) / dt + a dt / 2
+//                                    (first step: x' = x + v dt + a dt^2 / 2; see integrateRange)
+// Pinned particles (invMass 0) do not move here; drivers move theirs kinematically.
+void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
+    const size_t n = cloth.particleCount();
+    const int threads = int(state.threads.acc.size());
+    const bool verlet = ctx.integrator == Integrator::Verlet;
+    IntegrateParams P;
+    P.g = ctx.gravity;
+    P.dragPerMass = ctx.dragPerMass;
+    P.keep = ctx.keep;
+    P.verletKeep = 1.f - ctx.settings->time.verletFriction;
+    P.verletStart = verlet && !state.verletRunning;
+    state.verletRunning = verlet;
+    if (verlet) state.verletKick.resize(n, Vec3::Zero()); // torn-off copies start at 0
+    P.verletKick = state.verletKick.data();
+    P.dt = ctx.dt;
+    Vec3* x = cloth.x.data();
+    Vec3* v = cloth.v.data();
+    Vec3* xPrev = cloth.xPrev.data();
+    const float* invMass = cloth.invMass.data();
+    PackedParticle* packed = state.packed.data();
+    auto& acc = state.threads.acc;
+    const auto* ranges = state.threads.range.data();
+    parallelRegion(n, threads, [&](int t, int nt) {
+        const Chunk c = chunkOf(n, t, nt);
+        switch (ctx.integrator) {
+        case Integrator::SemiImplicitEuler:
+            integrateKernel<Integrator::SemiImplicitEuler>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
+            break;
+        case Integrator::ForwardEuler:
+            integrateKernel<Integrator::ForwardEuler>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
+            break;
+        case Integrator::Verlet:
+            integrateKernel<Integrator::Verlet>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
+            break;
+        default: break; // the references go through phaseIntegrateReference
+        }
+    });
+    moveDrivers(ctx, cloth, state);
+}
+
+} // namespace clothtear

@@ -1,0 +1,62 @@
+// The reference integrators in the step: implicit Euler (implicit_euler.h) and XPBD (xpbd.h), with
+// the springs at their full stiffness and the wind phase's forces.
+#include "implicit_euler.h"
+#include "phases.h"
+#include "xpbd.h"
+
+namespace clothtear {
+
+// The reference integrators (implicit_euler.h, xpbd.h): springs with their full stiffness (no
+// stability guard), gravity, air and the wind phase's forces, summed out of (and cleared from) the
+// per-thread buffers. Afterwards the packed copy and the pin signature are left as the explicit
+// integrator leaves it, for the limit phase.
+void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& state) {
+    refreshSpringCache(ctx, cloth, state); // the strain scan reads its ends and rest lengths
+    const Settings& settings = *ctx.settings;
+    const float dt = ctx.dt;
+    const size_t n = cloth.particleCount();
+    std::vector<Vec3>& ext = state.externalForce;
+    ext.clear();
+    for (size_t t = 0; t < state.threads.acc.size(); ++t) {
+        const auto [lo, hi] = state.threads.range[t];
+        if (lo >= hi) continue;
+        if (ext.empty()) ext.assign(n, Vec3::Zero());
+        for (size_t p = lo; p < hi; ++p) {
+            ext[p] += state.threads.acc[t][p].head<3>();
+            state.threads.acc[t][p].setZero();
+        }
+    }
+    const MaterialSettings& m = settings.material;
+    // Implicit Euler treats air drag implicitly (stable at any value); XPBD applies it explicitly,
+    // capped by the guard like the explicit integrators.
+    const float drag = settings.time.integrator == Integrator::Xpbd ? ctx.dragPerMass
+                       : settings.air.model == AirModel::Drag      ? settings.air.dragCoefficient / cloth.density
+                                                                   : 0.f;
+    ReferenceStepInput in{dt,
+                          ctx.gravity,
+                          drag,
+                          ctx.keep,
+                          {SpringKind{cloth.springs, m.stretchStiffness, m.stretchDamping},
+                           SpringKind{cloth.bends, m.bendStiffness, m.bendDamping}},
+                          ext};
+    if (settings.time.integrator == Integrator::ImplicitEuler) {
+        ImplicitCacheSlot& slot = state.implicit;
+        // The pattern follows the topology and the pinned particles: a stale cache starts afresh.
+        if (!slot.cache || !slot.stamp.fresh(ctx.revisions, ImplicitCacheSlot::kDeps)) {
+            slot.cache = std::make_unique<ImplicitEulerCache>();
+            slot.stamp.set(ctx.revisions);
+        }
+        const ImplicitEulerOptions options{settings.time.cgTolerance, settings.time.cgMaxIterations};
+        implicitEulerStep(cloth, in, options, *slot.cache);
+        ctx.profile->solverIterations += uint64_t(slot.cache->lastIterations);
+    } else {
+        xpbdStep(cloth, in, state.xpbdDx);
+    }
+    for (Index p = 0; p < n; ++p)
+        state.packed[p] = PackedParticle{{cloth.x[p].x(), cloth.x[p].y(), cloth.x[p].z(), 0.f},
+                                         {cloth.v[p].x(), cloth.v[p].y(), cloth.v[p].z(), 0.f}};
+    state.verletRunning = false;
+    moveDrivers(ctx, cloth, state);
+}
+
+} // namespace clothtear

@@ -1,0 +1,348 @@
+// The limit phase: strain scan, tethers and Provot length limiting (averaged Jacobi).
+//
+// Provot length limiting (Onal 2.1.1): a spring longer than rest * (1 + maxStretch) pulls its ends
+// together, split by inverse mass; pinned ends never move. Corrections are Jacobi (each spring's
+// divided by the larger number of corrections its ends get, so momentum is conserved) and
+// over-relaxed, so the result does not depend on spring order: a fixed row-major Gauss-Seidel
+// sweep over stiff links is what makes some solvers blow up at high resolution.
+// A spring that tears this sub-step is left alone (Onal 3.2): the scan records every spring at
+// or above its tear threshold (the tear phase's candidates) and the passes skip them. If there are
+// more than tear.max_per_step candidates, only the most strained max_per_step are exempt; the
+// passes limit the others, so a spring is never left unlimited without being torn (that ran away).
+//
+// Order and cost, all in one parallel region (LimitSolve::run):
+//   1. scan     reads every structural spring once (four at a time, kernels.h); most leave after one
+//               squared-length compare, no square root. Lists the candidates and the springs over
+//               the limit.
+//   2. tethers  on cloths the passes alone cannot hold (tethers.h: sag index), pull every particle
+//               back within reach of its anchor. A tether whose path runs through a tear candidate
+//               (or a ball contact) does not pull this sub-step; the scan comes first so that a
+//               spring reaching its threshold is seen before anything pulls it back.
+//   3. passes   Jacobi passes over the listed springs only: a pass drops the springs back within
+//               the limit (to kLimitTolerance) and lists the springs of the particles it moved that
+//               it pushed over (particle-spring table), so a pass covers what a full pass would
+//               correct; they stop when a pass corrects nothing. At rest that is a few hundred
+//               springs, not all of them, per sub-step.
+#include "kernels.h"
+#include "limit_kernels.h"
+#include "parallel.h"
+#include "phases.h"
+#include "tethers.h"
+
+#include <algorithm>
+#include <functional>
+
+namespace clothtear {
+namespace {
+
+// Lists shorter than this are worked by one thread (a barrier costs more than the work).
+constexpr size_t kSerialList = 2048;
+
+// Rebuilds the limit cache when the topology, the pinned particles or the drivers changed. Tether
+// anchors are the pinned particles that no driver moves: a tether to a moving clamp would drag the
+// cloth along with it and put all the stretch at the border between the clamp's particles and the
+// others.
+void refreshLimitCache(const StepContext& ctx, const Cloth& cloth, LimitCache& C) {
+    if (C.stamp.fresh(ctx.revisions, LimitCache::kDeps)) return;
+    std::vector<uint8_t> anchor(cloth.particleCount(), 0);
+    for (Index p = 0; p < cloth.particleCount(); ++p) anchor[p] = cloth.invMass[p] == 0.f;
+    for (const Driver& d : *ctx.drivers)
+        for (Index p : d.particles)
+            if (p < anchor.size()) anchor[p] = 0;
+    buildLimitCache(cloth, anchor, C);
+    C.stamp.set(ctx.revisions);
+}
+
+// One sub-step's limit phase: what the parts share, and the parts as named functions. run() calls
+// them from every thread of one parallel region, with barriers between them.
+class LimitSolve {
+public:
+    LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state);
+    void run();
+    int cappedSprings = 0; // springs the last allowed pass still corrected (thread 0 writes it)
+
+private:
+    // Is spring s (squared length len2) over its limit, by more than the tolerance? Springs under a
+    // ball may stretch up to the tear threshold: the ball, not the limit, decides where they are.
+    bool underBall(const Spring& s) const { return ((flags_[s.a] | flags_[s.b]) & kTouched) != 0; }
+    bool overLimit(const Spring& s, float len2) const {
+        return len2 > sq(s.rest * (underBall(s) ? heldDoneRatio_ : doneRatio_));
+    }
+    bool weakEnd(const Spring& s) const { return ((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge)) != 0; }
+    // A tear candidate of this sub-step, left to the tear phase. A spring too short to halve is
+    // limited even as a candidate: if its tear fails (no weak-point path, too short for a basic
+    // tear) it must not stay overstretched.
+    bool exempt(const Spring& s, float len2) const {
+        if (len2 < sq(s.rest * minTearRatio_) || s.rest < minSplitRest_) return false;
+        return len2 >= sq(s.rest * (weakEnd(s) ? ctx_.weakRatio : ctx_.tearRatio)) &&
+               std::sqrt(len2) / s.rest - 1.f >= exemptStrain_;
+    }
+
+    void scan(int t, int nt);
+    void prepareTethers(int nt);
+    void pullTethers(int t, int nt, bool anyFound);
+    void passes(int t, int nt);
+    // A Jacobi pass is two sweeps over the lists. Sweep 1 (countPass) drops the springs back within
+    // the limit and counts the corrections each particle gets (into buffer c). Sweep 2 (correctPass)
+    // adds the corrections, each spring's divided by the larger total count of its ends (over all
+    // `nc` count buffers).
+    int countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched);
+    void correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, int nc);
+    // Lists the springs of the particles in `moved` that a pass pushed over the limit. A spring
+    // whose two ends both moved is listed from its lower-numbered end only.
+    void expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list);
+
+    const StepContext& ctx_;
+    Cloth& cloth_;
+    StepState& state_;
+    LimitCache& C_;
+    ThreadBuffers& T_;
+    const CorrectionParams P_;
+    const int iterations_;
+    const float doneRatio_, heldDoneRatio_, minTearRatio_, minSplitRest_;
+    const bool useTethers_;
+    const uint32_t stamp0_;
+    Vec3* x_;
+    Vec3* v_;
+    const float* invMass_;
+    const uint8_t* flags_;
+    const Spring* springs_;
+    uint8_t* listed_;
+    uint32_t* movedIn_;
+    float exemptStrain_ = -1.f; // with too many candidates: those below this strain are limited
+    size_t listSize_[kMaxThreadSlots] = {};
+    int work_[kMaxThreadSlots] = {};
+};
+
+LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
+    : ctx_(ctx), cloth_(cloth), state_(state), C_(state.limit), T_(state.threads),
+      P_{ctx.settings->limit.relaxation, ctx.dt, ctx.velocityFix},
+      iterations_(ctx.settings->limit.iterations), doneRatio_(ctx.maxRatio * (1.f + kLimitTolerance)),
+      heldDoneRatio_(ctx.heldRatio * (1.f + kLimitTolerance)), minTearRatio_(std::min(ctx.tearRatio, ctx.weakRatio)),
+      minSplitRest_(cloth.minSplitRest),
+      useTethers_(ctx.limiting && sagIndex(state.limit.depth, ctx.gravity.norm(), ctx.dt, iterations_,
+                                           state.limit.meanRest) > kTetherSagIndex),
+      stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
+      flags_(cloth.flags.data()), springs_(cloth.springs.data()),
+      listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
+      movedIn_(ctx.limiting ? state.limit.moved.data() : nullptr) {
+    if (ctx.limiting) C_.passStamp += uint32_t(iterations_);
+}
+
+// Every structural spring once, most of them with one compare and no square root: tear candidates
+// into found[t], springs over the limit onto this thread's list.
+void LimitSolve::scan(int t, int nt) {
+    const SpringCache& S = state_.springs;
+    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), S.k.data(), S.kd.data()};
+    // The scan flags springs over the limit and those over a tear threshold (which may be lower).
+    const float scanRatio = std::min(ctx_.limiting ? doneRatio_ : 1e30f, minTearRatio_);
+    std::vector<Index>& list = T_.active[t];
+    std::vector<TearCandidate>& found = T_.found[t];
+    const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
+    scanSprings(arrays, sc.begin, sc.end, scanRatio, state_.packed.data(), [&](size_t e, float len2) {
+        const Index i = S.index[e];
+        const Spring& s = springs_[i];
+        if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * (weakEnd(s) ? ctx_.weakRatio : ctx_.tearRatio)))
+            found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
+        if (ctx_.limiting && overLimit(s, len2)) {
+            listed_[i] = 1;
+            list.push_back(Index(i));
+        }
+    });
+}
+
+// Thread 0, after the scan: the tethers that must not pull (their path runs through a candidate or a
+// particle under a ball: what hangs below a ball hangs from it), and with more candidates than
+// tear.max_per_step, the strain below which candidates are limited after all.
+void LimitSolve::prepareTethers(int nt) {
+    const int maxPerStep = ctx_.settings->tear.maxPerStep;
+    size_t candidates = 0;
+    for (int k = 0; k < nt; ++k) candidates += T_.found[k].size();
+    if (useTethers_) {
+        std::vector<Index> seeds;
+        for (int k = 0; k < nt; ++k)
+            for (const TearCandidate& f : T_.found[k]) {
+                seeds.push_back(springs_[f.spring].a);
+                seeds.push_back(springs_[f.spring].b);
+            }
+        for (const BallContact& c : state_.contacts)
+            for (Index p : cloth_.triangles[c.triangle].p) seeds.push_back(p);
+        markTethersThrough(C_, seeds, C_.cut);
+    }
+    if (candidates > size_t(maxPerStep)) {
+        std::vector<float> strains;
+        for (int k = 0; k < nt; ++k)
+            for (const TearCandidate& f : T_.found[k]) strains.push_back(f.strain);
+        std::nth_element(strains.begin(), strains.begin() + (maxPerStep - 1), strains.end(), std::greater<>());
+        exemptStrain_ = strains[maxPerStep - 1];
+    }
+}
+
+// The tethers of this thread's particles: their anchors are pinned, so nothing another thread does
+// moves what this one reads. With no candidates and no contacts (`anyFound` false) every tether pulls.
+void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
+    if (!useTethers_) return;
+    const uint8_t* cut = anyFound ? C_.cut.data() : nullptr;
+    const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
+    tetherKernel(pc.begin, pc.end, C_.tether.data(), C_.length.data(), cut, ctx_.maxRatio * (1.f - kTetherSlack),
+                 ctx_.dt, ctx_.velocityFix, state_.packed.data(), x_, v_);
+}
+
+int LimitSolve::countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched) {
+    int corrected = 0;
+    size_t keep = 0;
+    for (Index i : list) {
+        const Spring& s = springs_[i];
+        const float len2 = (x_[s.b] - x_[s.a]).squaredNorm();
+        if (!overLimit(s, len2)) {
+            listed_[i] = 0;
+            continue;
+        }
+        list[keep++] = i;
+        if (!exempt(s, len2)) corrected += countCorrection(s, invMass_, c, touched);
+    }
+    list.resize(keep);
+    return corrected;
+}
+
+void LimitSolve::correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, int nc) {
+    auto& corr = T_.corr;
+    for (Index i : list) {
+        const Spring& s = springs_[i];
+        if (invMass_[s.a] + invMass_[s.b] == 0.f) continue;
+        const Vec3 d = x_[s.b] - x_[s.a];
+        const float len2 = d.squaredNorm();
+        if (exempt(s, len2)) continue;
+        float ca = 0.f, cb = 0.f;
+        for (int k = 0; k < nc; ++k) {
+            ca += corr[k][s.a].w();
+            cb += corr[k][s.b].w();
+        }
+        addCorrection(s, d, len2, s.rest * (underBall(s) ? ctx_.heldRatio : ctx_.maxRatio), std::max(ca, cb), invMass_,
+                      v_, P_, c, cv);
+    }
+}
+
+void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list) {
+    for (Index p : moved)
+        for (uint32_t k = C_.springStart[p]; k < C_.springStart[p + 1]; ++k) {
+            const Index i = C_.springOf[k];
+            if (listed_[i]) continue;
+            const Spring& s = springs_[i];
+            const Index q = s.a == p ? s.b : s.a;
+            if (q < p && movedIn_[q] == stamp) continue;
+            if (overLimit(s, (x_[s.b] - x_[s.a]).squaredNorm())) {
+                listed_[i] = 1;
+                list.push_back(i);
+            }
+        }
+}
+
+// Jacobi passes over the listed springs, until none is over the limit or limit.iterations ran.
+void LimitSolve::passes(int t, int nt) {
+    auto& active = T_.active;
+    auto& corr = T_.corr;
+    auto& corrV = T_.corrV;
+    auto& touched = T_.touched;
+    auto& moved = T_.moved;
+    std::vector<Index>& list = active[t];
+    const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
+    for (int pass = 0; pass < iterations_; ++pass) {
+        const uint32_t stamp = stamp0_ + uint32_t(pass) + 1;
+        listSize_[t] = list.size();
+        parallelBarrier(nt); // lists, positions and listSize_[] complete
+        size_t total = 0;
+        for (int k = 0; k < nt; ++k) total += listSize_[k];
+        if (total == 0) break;
+        if (total < kSerialList || nt == 1) {
+            // Thread 0 works every list, in thread order, into its own buffer.
+            if (t == 0) {
+                int corrected = 0;
+                touched[0].clear();
+                for (int k = 0; k < nt; ++k) corrected += countPass(active[k], corr[0].data(), touched[0]);
+                for (int k = 0; k < nt; ++k) correctPass(active[k], corr[0].data(), corrV[0].data(), 1);
+                moved[0].clear();
+                applyCorrections(touched, corr, corrV, 1, [](Index) { return true; }, x_, v_, movedIn_, stamp,
+                                 moved[0]);
+                expand(moved[0], stamp, active[0]);
+                work_[0] = corrected;
+                for (int k = 1; k < nt; ++k) work_[k] = 0;
+            }
+        } else {
+            touched[t].clear();
+            work_[t] = countPass(list, corr[t].data(), touched[t]);
+            parallelBarrier(nt); // counts complete
+            correctPass(list, corr[t].data(), corrV[t].data(), nt);
+            parallelBarrier(nt); // corrections complete
+            moved[t].clear();
+            auto mine = [&](Index p) { return p >= pc.begin && p < pc.end; };
+            applyCorrections(touched, corr, corrV, nt, mine, x_, v_, movedIn_, stamp, moved[t]);
+            parallelBarrier(nt); // positions and stamps complete
+            expand(moved[t], stamp, list);
+        }
+        parallelBarrier(nt); // work_[] complete
+        int corrected = 0;
+        for (int k = 0; k < nt; ++k) corrected += work_[k];
+        if (corrected == 0) break;
+        if (t == 0 && pass + 1 == iterations_) cappedSprings = corrected;
+    }
+    // Springs still listed (iteration cap, exempt candidates) leave their lists.
+    parallelBarrier(nt);
+    for (Index i : list) listed_[i] = 0;
+}
+
+void LimitSolve::run() {
+    const size_t n = cloth_.particleCount(), ns = cloth_.springs.size();
+    parallelRegion(std::max(ns, n), int(T_.acc.size()), [&](int t, int nt) {
+        scan(t, nt);
+        if (!ctx_.limiting) return;
+        parallelBarrier(nt); // candidates complete
+        size_t candidates = 0;
+        for (int k = 0; k < nt; ++k) candidates += T_.found[k].size();
+        // Every thread counts the same lists, so all agree on anyFound.
+        const bool anyFound = candidates > 0 || !state_.contacts.empty();
+        if (anyFound) {
+            if (t == 0) prepareTethers(nt);
+            parallelBarrier(nt); // cut marks and exemptStrain_ complete
+        }
+        pullTethers(t, nt, anyFound);
+        passes(t, nt);
+    });
+}
+
+// Per-thread work arrays sized for this cloth and emptied for the sub-step.
+void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
+    if (T.corr.size() != size_t(threads)) T.corr.resize(threads);
+    if (T.corrV.size() != size_t(threads)) T.corrV.resize(threads);
+    for (auto& c : T.corr)
+        if (c.size() != particles) c.resize(particles, Corr::Zero());
+    for (auto& c : T.corrV)
+        if (c.size() != particles) c.resize(particles, Corr::Zero());
+    T.active.resize(threads);
+    T.moved.resize(threads);
+    T.touched.resize(threads);
+    T.found.resize(threads);
+    for (int t = 0; t < threads; ++t) {
+        T.active[t].clear();
+        T.moved[t].clear();
+        T.found[t].clear();
+    }
+}
+
+} // namespace
+
+void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
+    prepareBuffers(state.threads, int(state.threads.acc.size()), cloth.particleCount());
+    if (ctx.limiting) refreshLimitCache(ctx, cloth, state.limit);
+    LimitSolve solve(ctx, cloth, state);
+    solve.run();
+    if (solve.cappedSprings > 0) {
+        ctx.profile->limitCapped++;
+        ctx.profile->limitCappedSprings += uint64_t(solve.cappedSprings);
+    }
+    // Tear candidates, merged in thread order (deterministic).
+    state.tearCandidates.clear();
+    for (auto& f : state.threads.found) state.tearCandidates.insert(state.tearCandidates.end(), f.begin(), f.end());
+}
+
+} // namespace clothtear

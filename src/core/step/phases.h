@@ -1,0 +1,33 @@
+// The phases of a sub-step, in the order step.cpp runs them, each a function of the step context,
+// the cloth and the step state (docs/architecture.md lists what each reads and writes).
+#pragma once
+#include "step_context.h"
+#include "step_state.h"
+
+namespace clothtear {
+
+// springs.cpp: sizes the per-thread force buffers (gravity and air act in the integrator).
+void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state);
+// springs.cpp: structural and bend-shear spring forces into the force buffers (explicit integrators).
+void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state);
+// Brings the spring cache up to date (springs.cpp); the strain scan and the ball broad phase read it.
+void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state);
+// wind.cpp: wind drag on every triangle into the force buffers.
+void phaseWind(const StepContext& ctx, Cloth& cloth, StepState& state);
+// integrate.cpp: semi-implicit Euler, forward Euler or Verlet; then the drivers move.
+void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state);
+// integrate_reference.cpp: implicit Euler or XPBD, springs included; then the drivers move.
+void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& state);
+// collide_phase.cpp: balls move and push the cloth (before the limit); contacts listed.
+void phaseCollide(const StepContext& ctx, Cloth& cloth, StepState& state);
+// limit.cpp: strain scan (tear candidates), tethers, Provot length limiting.
+void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state);
+// collide_phase.cpp: balls give way where the limit held the cloth; the ground.
+void phaseContact(const StepContext& ctx, Cloth& cloth, StepState& state);
+// tear_phase.cpp: tears the candidates of the scan (the only topology change of the step).
+void phaseTear(const StepContext& ctx, Cloth& cloth, StepState& state);
+
+// integrate.cpp: kinematic drivers move their particles at constant velocity.
+void moveDrivers(const StepContext& ctx, Cloth& cloth, StepState& state);
+
+} // namespace clothtear

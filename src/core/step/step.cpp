@@ -1,0 +1,187 @@
+// The step: a frame of sub-steps, each a list of named, timed phases over one step context
+// (phases.h), then the frame's bookkeeping. See docs/architecture.md for what each phase reads and
+// writes.
+#include "clothtear/world.h"
+
+#include "finite_check.h"
+#include "parallel.h"
+#include "phase_timer.h"
+#include "phases.h"
+#include "sleep.h"
+
+#include <cmath>
+#include <limits>
+
+namespace clothtear {
+
+const char* phaseName(Phase p) {
+    static const char* names[] = {"forces",  "springs", "wind", "integrate",  "collide",
+                                  "limit", "contact", "tear", "bookkeeping"};
+    return names[int(p)];
+}
+
+namespace {
+
+// After phase `after` (-1: before the sub-step's first phase, i.e. set from outside the step): the
+// first non-finite value, with the phase, frame and time, into nonFiniteWhere. The force buffers are
+// read after the phases that fill them (springs, wind); the integrator clears them.
+void checkFinite(World& w, const StepState& state, int after) {
+    if (!w.finite) return; // the first one is the one to trace
+    const bool forces = after == int(Phase::Springs) || after == int(Phase::Wind);
+    const std::string what = findNonFinite(w.cloth, w.balls, forces ? &state.threads.acc : nullptr);
+    if (what.empty()) return;
+    w.finite = false;
+    const std::string where = after < 0 ? std::string("before a sub-step (set from outside the step)")
+                                        : std::string("after phase '") + phaseName(Phase(after)) + "'";
+    w.nonFiniteWhere = where + " at frame " + std::to_string(w.steps) + ", t = " + std::to_string(w.time) + " s: " + what;
+}
+
+// Once per frame: the largest structural strain (compared as squared length ratios, one square
+// root at the end) and the first non-finite particle, both split over the threads.
+void phaseBookkeeping(World& w) {
+    PhaseTimer timer(w.profile, Phase::Bookkeeping);
+    const Cloth& cloth = w.cloth;
+    const size_t ns = cloth.springs.size(), n = cloth.particleCount();
+    const int threads = threadsFor(n);
+    float worstLen2[kMaxThreadSlots], worstRest2[kMaxThreadSlots];
+    size_t firstBad[kMaxThreadSlots];
+    float speed2[kMaxThreadSlots];
+    const bool checkFinite = w.finite;
+    parallelRegion(std::max(ns, n), threads, [&](int t, int nt) {
+        const Chunk c = chunkOf(ns, t, nt);
+        float len2Max = 0.f, rest2Max = 1.f; // ratio len2Max / rest2Max, kept without dividing
+        for (size_t i = c.begin; i < c.end; ++i) {
+            const Spring& s = cloth.springs[i];
+            const float len2 = (cloth.x[s.b] - cloth.x[s.a]).squaredNorm(), rest2 = s.rest * s.rest;
+            if (len2 * rest2Max > len2Max * rest2) len2Max = len2, rest2Max = rest2;
+        }
+        worstLen2[t] = len2Max;
+        worstRest2[t] = rest2Max;
+        firstBad[t] = n;
+        speed2[t] = 0.f;
+        if (!checkFinite) return;
+        const Chunk pc = chunkOf(n, t, nt);
+        float fastest = 0.f; // for sleep.cpp
+        for (size_t p = pc.begin; p < pc.end; ++p) {
+            if (!cloth.x[p].allFinite() || !cloth.v[p].allFinite()) {
+                firstBad[t] = p;
+                break;
+            }
+            fastest = std::max(fastest, cloth.v[p].squaredNorm());
+        }
+        speed2[t] = fastest;
+    });
+    const int used = (threads > 1 && std::max(ns, n) >= kParallelWork) ? threads : 1;
+    float worst = 0.f, fastest2 = 0.f;
+    size_t bad = n;
+    for (int k = 0; k < used; ++k) {
+        worst = std::max(worst, std::sqrt(worstLen2[k] / worstRest2[k]) - 1.f);
+        bad = std::min(bad, firstBad[k]);
+        fastest2 = std::max(fastest2, speed2[k]);
+    }
+    w.maxStrain = worst;
+    w.maxSpeed = checkFinite ? std::sqrt(fastest2) : std::numeric_limits<float>::infinity();
+    if (w.finite) {
+        if (bad < n) {
+            w.finite = false;
+            w.nonFiniteWhere = "particle " + std::to_string(bad) + " at frame " + std::to_string(w.steps);
+        }
+        for (const Ball& b : w.balls)
+            if (!b.x.allFinite() || !b.v.allFinite()) w.finite = false;
+    }
+}
+
+} // namespace
+
+void World::step() {
+    applySettings();
+    StepState& state = *state_;
+    if (stayAsleep(*this, state)) {
+        time += settings.time.frameDt;
+        ++steps;
+        ++sleptFrames;
+        return;
+    }
+    if (settings.sleep.enabled) state.sleep.frameStart = cloth.x;
+    frameSubsteps = guardSubsteps();
+    state.substepsNow = frameSubsteps;
+    for (int i = 0; i < frameSubsteps; ++i) substep();
+    state.substepsNow = 0;
+    phaseBookkeeping(*this);
+    ++steps;
+    updateSleep(*this, state);
+}
+
+// The stability guard, first part: with an explicit integrator, take enough sub-steps that the
+// material as set is stable (stability.cpp), up to time.max_substeps. Whatever is still too stiff
+// at that step is capped spring by spring in the spring cache (springs.cpp), so the guard never
+// lets a frame explode, and where the budget allows, the cloth keeps its stiffness.
+int World::guardSubsteps() {
+    const TimeSettings& T = settings.time;
+    if (!T.stabilityGuard || !isExplicit(T.integrator) || T.maxSubsteps <= T.substeps) return T.substeps;
+    StepState& state = *state_;
+    const Revisions& now = state.revisions.observe(*this); // the estimate does not depend on dt
+    GuardCache& G = state.guard;
+    if (!G.stamp.fresh(now, GuardCache::kDeps)) {
+        G.stableStep = stableStepEstimate(cloth, settings);
+        G.stamp.set(now);
+    }
+    const double need = std::ceil(double(T.frameDt) / G.stableStep);
+    return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need));
+}
+
+void World::substep() {
+    StepState& state = *state_;
+    const int substeps = state.substepsNow > 0 ? state.substepsNow : settings.time.substeps;
+    const StepContext ctx = makeStepContext(*this, state, settings.time.frameDt / float(substeps));
+    // Debug builds and check.finite: the first phase boundary with a NaN/Inf is reported
+    // (nonFiniteWhere). A check after a phase that did not run finds what the previous one found.
+    auto check = [&](int afterPhase) {
+        if (ctx.checkFinite) checkFinite(*this, state, afterPhase);
+    };
+    check(-1);
+    {
+        PhaseTimer t(profile, Phase::Forces);
+        phaseForces(ctx, cloth, state);
+    }
+    if (!ctx.reference) {
+        PhaseTimer t(profile, Phase::Springs);
+        phaseSprings(ctx, cloth, state);
+    }
+    check(int(Phase::Springs));
+    if (ctx.windBlows) {
+        PhaseTimer t(profile, Phase::Wind);
+        phaseWind(ctx, cloth, state);
+    }
+    check(int(Phase::Wind));
+    {
+        PhaseTimer t(profile, Phase::Integrate);
+        if (ctx.reference) phaseIntegrateReference(ctx, cloth, state);
+        else phaseIntegrate(ctx, cloth, state);
+    }
+    check(int(Phase::Integrate));
+    if (ctx.collide) {
+        PhaseTimer t(profile, Phase::Collide);
+        phaseCollide(ctx, cloth, state);
+    }
+    check(int(Phase::Collide));
+    if (ctx.scan) {
+        PhaseTimer t(profile, Phase::Limit);
+        phaseLimit(ctx, cloth, state);
+    }
+    check(int(Phase::Limit));
+    if (ctx.contact) {
+        PhaseTimer t(profile, Phase::Contact);
+        phaseContact(ctx, cloth, state);
+    }
+    check(int(Phase::Contact));
+    if (ctx.tearing && !state.tearCandidates.empty()) {
+        PhaseTimer t(profile, Phase::Tear);
+        phaseTear(ctx, cloth, state);
+    }
+    check(int(Phase::Tear));
+    time += ctx.dt;
+    profile.substeps++;
+}
+
+} // namespace clothtear

@@ -1,0 +1,69 @@
+// The step context: everything a sub-step's phases read that follows from the settings and the
+// world at the start of the sub-step, derived once (makeStepContext) so a rule lives in one place:
+// the sub-step length, gravity, which phases run, the tear thresholds, the air terms, the threads.
+// Phases are functions of (StepContext, Cloth, StepState) (phases.h), as Box2D v3's stages take a
+// b2StepContext.
+#pragma once
+#include "clothtear/world.h"
+#include "revisions.h"
+
+#include <vector>
+
+namespace clothtear {
+
+struct StepState;
+
+struct StepContext {
+    const Settings* settings = nullptr;
+    float dt = 0;    // s, this sub-step
+    float invDt = 0; // 1/s
+    double time = 0; // s, simulated time at the start of the sub-step
+    Vec3 gravity = Vec3::Zero(); // m/s^2
+    Integrator integrator = Integrator::SemiImplicitEuler;
+    bool reference = false; // implicit Euler or XPBD: springs inside the integrator, no guard
+    int threads = 1;        // threads for this cloth (threadsFor)
+
+    // Which phases run. A phase the scene does not need is not entered.
+    bool windBlows = false; // wind on, with a speed and a drag coefficient
+    bool collide = false;   // balls present
+    bool contact = false;   // balls or the ground
+    bool limiting = false;  // limit.enabled with iterations > 0
+    bool scan = false;      // the limit phase runs: limiting, or the strain scan for tearing
+    bool tearing = false;   // tear.enabled
+    bool checkFinite = false; // check.finite or a Debug build: NaN/Inf located at every phase boundary
+
+    // Length limit and tearing, as length ratios (1 + strain).
+    float maxRatio = 1;   // 1 + limit.max_stretch
+    float heldRatio = 1;  // under a ball: up to the tear threshold (the ball decides, Onal 4.1)
+    float tearRatio = 1e30f; // 1 + tear.threshold (1e30 without tearing)
+    float weakRatio = 1e30f; // springs touching a weak point or a one-point connection (tearStrainFor)
+    bool velocityFix = true; // inelastic limit fix; off for Verlet, whose moves are velocities
+
+    // Air, as the explicit integrators apply it.
+    float dragPerMass = 0; // 1/s, a = -dragPerMass v, capped by the guard (guardDragPerMass)
+    float keep = 1;        // Keserica model: velocity kept per sub-step
+
+    // The world's parts the phases act on besides the cloth.
+    std::vector<Ball>* balls = nullptr;
+    std::vector<Driver>* drivers = nullptr;
+    StepProfile* profile = nullptr;
+    TearLog* tearLog = nullptr;
+    bool ballBroadPhase = true;
+    Revisions revisions; // of the caches' inputs, this sub-step
+};
+
+// Wind acts: on, with a speed and a drag coefficient (the wind phase runs; a cloth in wind never sleeps).
+bool windBlows(const Settings& settings);
+
+// Threads worth using for a cloth of n particles (forking costs a few microseconds).
+int threadsFor(size_t particles);
+
+// Air drag of the explicit integrators: with the guard on, capped at 0.5 / dt (explicit drag
+// v -= c/rho v dt overshoots past zero velocity beyond 1 / dt and explodes beyond 2 / dt; a light
+// cloth in the safe ranges reaches c/rho = 500 1/s).
+float guardDragPerMass(const Settings& settings, float density, float dt);
+
+// Builds the context of a sub-step of length dt (observing the revisions of the caches' inputs).
+StepContext makeStepContext(World& world, StepState& state, float dt);
+
+} // namespace clothtear

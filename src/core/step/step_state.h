@@ -1,0 +1,130 @@
+// The step's own state behind the World facade: caches derived from the cloth and the settings
+// (rebuilt through revisions.h), work arrays kept between steps so the step does not allocate, and
+// the little integrator and sleep state that outlives a sub-step. Internal to the core.
+#pragma once
+#include "clothtear/tear.h"
+#include "clothtear/world.h"
+#include "revisions.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace clothtear {
+
+// A ball touching a triangle in the collide phase: the side of the triangle (sign along its normal)
+// the ball centre belongs on, which the contact phase keeps, and where the corners were left, which
+// tells the contact phase whether the limit pulled them back since.
+struct BallContact {
+    Index triangle;
+    uint32_t ball;
+    int8_t side;
+    std::array<Vec3, 3> at;
+};
+
+// A particle as the spring kernels read it (kernels.h): position and velocity, each xyz and a zero
+// fourth lane; two to a cache line.
+struct alignas(32) PackedParticle {
+    float x[4];
+    float v[4];
+};
+
+// The springs as the kernels read them (springs.cpp, kernels.h): structural, then bend-shear, one
+// array per field, ends as byte offsets (16 * particle), stiffness and damping after the stability
+// guard, in an order that keeps the springs of a SIMD group apart (see refreshSpringCache).
+struct SpringCache {
+    static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial | kDependsOnDt;
+    CacheStamp stamp;
+    std::vector<uint32_t> a16, b16;  // 16 * particle index of the two ends
+    std::vector<Index> index;        // the spring's index in cloth.springs / cloth.bends
+    float maxRest = 0;               // m, longest structural rest length (ball broad phase)
+    std::vector<float> rest, k, kd;  // m, N/m, N s/m
+    size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
+    std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
+};
+
+// Per-topology data of the limit phase (limit.cpp, tethers.h) and its per-sub-step work arrays.
+// Tether anchors are the pinned particles no driver moves, so it depends on the drivers too.
+struct LimitCache {
+    static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnDrivers;
+    CacheStamp stamp;
+    // Tethers (long-range attachments).
+    std::vector<Index> anchor; // per particle: the pinned particle it hangs from, kNone if none
+    std::vector<Index> tether; // per particle: its anchor if it has a tether to pull (not pinned), else kNone
+    std::vector<float> length; // m, per particle: rest length of the spring path to the anchor
+    std::vector<Index> parent; // per particle: previous particle on that path (kNone for anchors)
+    std::vector<Index> order;  // particles reached, breadth-first from the anchors (parents first)
+    uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
+    float meanRest = 0;        // m, mean rest length of the structural springs
+    // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]).
+    std::vector<uint32_t> springStart;
+    std::vector<Index> springOf;
+    // Work arrays, sized with the cloth.
+    std::vector<uint8_t> cut;    // per particle: its tether path runs through a tearing spring
+    std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
+    std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
+    uint32_t passStamp = 0;      // last pass stamp used
+};
+
+struct ImplicitEulerCache; // implicit_euler.h
+// The implicit integrator's matrix and pattern: copying a World starts the copy with an empty one.
+struct ImplicitCacheSlot {
+    static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass;
+    CacheStamp stamp;
+    std::unique_ptr<ImplicitEulerCache> cache;
+    ImplicitCacheSlot();
+    ~ImplicitCacheSlot();
+    ImplicitCacheSlot(const ImplicitCacheSlot&);
+    ImplicitCacheSlot& operator=(const ImplicitCacheSlot&);
+};
+
+// The stability guard's estimate of the stable sub-step (stability.cpp), cached.
+struct GuardCache {
+    static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial;
+    CacheStamp stamp;
+    double stableStep = 0; // s
+};
+
+// What sleep.cpp remembers of the cloth it put to sleep.
+struct SleepState {
+    double restSince = -1; // s, simulated time since which the cloth is at rest; -1: moving
+    Settings settings;     // the parameters when it fell asleep (any change wakes it)
+    uint64_t topology = 0, mass = 0;
+    Vec3 lo = Vec3::Zero(), hi = Vec3::Zero(); // m, the cloth's box
+    std::vector<Vec3> frameStart;             // positions at the start of the frame, with sleep on
+};
+
+// Per-thread work arrays of the step (threads: see threadsFor in step_context.h).
+struct ThreadBuffers {
+    std::vector<std::vector<Eigen::Vector4f>> acc;  // force buffers (xyz), zero between sub-steps
+    std::vector<std::array<size_t, 2>> range;       // particles [lo, hi) each force buffer may hold
+    std::vector<std::vector<Eigen::Vector4f>> corr; // limit corrections (xyz, count), zero between passes
+    std::vector<std::vector<Eigen::Vector4f>> corrV; // limit velocity changes (xyz)
+    std::vector<std::vector<Index>> active;         // springs the limit still works on
+    std::vector<std::vector<Index>> touched;        // particles with a correction this pass
+    std::vector<std::vector<Index>> moved;          // particles the last Jacobi pass moved
+    std::vector<std::vector<TearCandidate>> found;  // tear candidates of the scan
+};
+
+struct StepState {
+    RevisionTracker revisions;
+    SpringCache springs;
+    LimitCache limit;
+    GuardCache guard;
+    ImplicitCacheSlot implicit;
+    ThreadBuffers threads;
+    std::vector<PackedParticle> packed;         // per particle: x and v for the spring kernels
+    std::vector<TearCandidate> tearCandidates;  // springs over their tear threshold, from the scan
+    std::vector<BallContact> contacts;          // from the collide phase, for the contact phase
+    std::vector<int32_t> contactOf;             // per triangle: its entry in contacts, -1
+    std::vector<Vec3> externalForce;            // reference integrators: N per particle (wind)
+    std::vector<Vec3> xpbdDx;                   // XPBD: displacements within the sub-step
+    // Verlet (integrate.cpp): whether the last integration was Verlet (else its next step starts
+    // it) and per particle, a dt / 2 of its last step. Part of the state hash.
+    bool verletRunning = false;
+    std::vector<Vec3> verletKick;
+    int substepsNow = 0; // sub-steps of the frame being stepped (0 outside step(): time.substeps)
+    SleepState sleep;
+};
+
+} // namespace clothtear
