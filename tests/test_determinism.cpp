@@ -57,7 +57,7 @@ struct Case {
     int frames;
 };
 
-// Above 2048 particles the step uses every thread (world.cpp threadsFor); these cloths are above it.
+// Above 2048 particles the step uses every thread (step_context.cpp threadsFor); these cloths are above it.
 const Case kCases[] = {
     {"tension", {"tension.notch=1"}, 90},                                  // drivers, tearing, 2304 particles
     {"ball-r1-v3-high", {}, 60},                                           // ball, collisions, tearing

@@ -67,7 +67,7 @@ double rmsDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 // the same recurrence: semi-implicit Euler starts with x_1 = x_0 + v_0 dt + a dt^2 (a whole kick
 // before the drift) and reads v as the velocity at the step's start; Verlet starts with the Taylor
 // step x_0 + v_0 dt + a dt^2 / 2 and gives its damping forces the velocity at t_n to second order
-// (world.cpp, integrateRange). The sub-step ranges keep the differences far above float round-off
+// (src/core/step/integrate.cpp, integrateRange). The sub-step ranges keep the differences far above float round-off
 // (about 5e-7 of the cloth size here) and, for forward Euler, inside its asymptotic range.
 struct OrderCase {
     const char* integrator;

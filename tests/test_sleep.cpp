@@ -84,7 +84,7 @@ TEST(BroadPhase, SameResultAsTestingEveryTriangle) {
                             std::vector<std::string>{"cloth.resolution_x=40", "cloth.resolution_y=40",
                                                      "ball.radius=0.2"}),
                   "");
-        w.ballBroadPhase = broad;
+        w.settings.collision.broadPhase = broad;
         for (int f = 0; f < 60; ++f)
             w.step();
         EXPECT_GT(w.tearLog.total(), 0u) << "the ball must tear the cloth (contacts with torn triangles)";

@@ -87,7 +87,7 @@ int runSkipping(const BenchOptions& opt) {
         b.x = Vec3(10.f, far.settings.collision.groundHeight + b.radius, 0.f);
         far.balls.push_back(b);
         World farAll = far;
-        farAll.ballBroadPhase = false;
+        farAll.settings.collision.broadPhase = false;
         const double a = msPerFrame(none, frames), bb = msPerFrame(far, frames),
                      c = msPerFrame(farAll, frames);
         report("balls absent (skipped) vs a ball far away, broad phase", a, bb);
@@ -142,7 +142,7 @@ int runSkipping(const BenchOptions& opt) {
         for (int f = 0; f < 12; ++f)
             broad.step(); // the ball is at the cloth
         World all = broad;
-        all.ballBroadPhase = false;
+        all.settings.collision.broadPhase = false;
         const double a = msPerFrame(broad, frames / 2), b = msPerFrame(all, frames / 2);
         const std::string what = std::string("ball broad phase, r = ") + bc.radius + " m ball in the " + br +
                                  "x" + br + " cloth (ball-r1-v3-high)";

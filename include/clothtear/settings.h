@@ -6,7 +6,7 @@
 
 namespace clothtear {
 
-// The first three are explicit (springs as forces, src/core/world.cpp [INTEGRATE]); the last two are
+// The first three are explicit (springs as forces, src/core/step/integrate.cpp); the last two are
 // the references a user would pick instead: implicit Euler (src/core/implicit_euler.h) and XPBD
 // (src/core/xpbd.h), both stable at any sub-step and never touched by the stability guard.
 enum class Integrator : int32_t { SemiImplicitEuler = 0, ForwardEuler = 1, Verlet = 2, ImplicitEuler = 3, Xpbd = 4 };
@@ -68,6 +68,7 @@ struct CollisionSettings {
     float friction = 0.3f;     // Coulomb coefficient, [0, 2]
     float thickness = 0.005f;  // m, [0, 0.1]  cloth half-thickness kept between cloth and colliders
     float ballDensity = 200.f; // kg/m^3, informational default for the ball tool
+    bool broadPhase = true;    // ball phases test only the triangles of particles near each ball
 };
 
 struct TearSettings {

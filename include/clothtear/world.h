@@ -69,7 +69,7 @@ private:
 
 // The stability guard's estimate of the largest stable sub-step of explicit integration for the
 // material as set (before any spring is capped), s: Gershgorin's bound over each particle's
-// springs, so the stiffest springs on the lightest particle decide it (src/core/stability.cpp).
+// springs, so the stiffest springs on the lightest particle decide it (src/core/step/stability.cpp).
 // Infinite for the reference integrators.
 double stableStepEstimate(const Cloth& cloth, const Settings& settings);
 
@@ -92,11 +92,8 @@ public:
     float maxStrain = 0;    // over structural springs, after the last sub-step
     int frameSubsteps = 0;  // sub-steps of the last frame (time.substeps, or more: see guardSubsteps)
     float maxSpeed = 0;     // m/s, fastest particle after the last frame
-    bool asleep = false;    // at rest and not simulated until something can touch it (sleep.cpp)
+    bool asleep = false;    // at rest and not simulated until something can touch it (step/sleep.cpp)
     uint64_t sleptFrames = 0; // frames skipped asleep
-    // Benchmark switch, not a parameter: false makes the ball phases test every triangle instead of
-    // the particles near each ball (what the broad phase saves, bench/README.md).
-    bool ballBroadPhase = true;
     bool finite = true;     // false once any NaN/Inf appeared in the state
     std::string nonFiniteWhere; // where the first non-finite value was seen: phase (with check.finite
                                 // or in Debug builds, else the frame's end) and particle

@@ -67,6 +67,7 @@ const ParamInfo kParams[] = {
     CT_F("collision.ground_height", collision.groundHeight, -20, 20, -1000, 1000, "m", "Height of the ground plane", false),
     CT_F("collision.friction", collision.friction, 0, 1, 0, 10, "", "Coulomb friction between cloth and colliders", false),
     CT_F("collision.thickness", collision.thickness, 0, 0.05, 0, 1, "m", "Gap kept between cloth and colliders", false),
+    CT_B("collision.broad_phase", collision.broadPhase, "Ball phases test only the triangles of particles near each ball (off: every triangle; the same result, slower: what the broad phase saves, bench/README.md)", false),
 
     CT_B("tear.enabled", tear.enabled, "Tearing (strain scan and topology changes)", false),
     CT_F("tear.threshold", tear.threshold, 0.05, 3, 0.001, 100, "", "Strain at which a spring tears (basic tear)", false),

@@ -57,7 +57,7 @@ StepContext makeStepContext(World& w, StepState& state, float dt) {
     c.drivers = &w.drivers;
     c.profile = &w.profile;
     c.tearLog = &w.tearLog;
-    c.ballBroadPhase = w.ballBroadPhase;
+    c.ballBroadPhase = S.collision.broadPhase;
     c.revisions = state.revisions.observe(w, dt);
     return c;
 }
