@@ -77,14 +77,13 @@ void BM_StrainScan(benchmark::State& state) {
     ThreadScope threads(int(state.range(2)));
     World w = settledCurtain({res, tearing});
     w.settings.limit.enabled = false;
-    const std::vector<Vec3> x0 = w.cloth.x, v0 = w.cloth.v, p0 = w.cloth.xPrev;
+    const std::vector<Vec3> x0 = w.cloth.x, v0 = w.cloth.v;
     int sinceReset = 0;
     for (auto _ : state) {
         if (++sinceReset == 50) {
             state.PauseTiming();
             w.cloth.x = x0;
             w.cloth.v = v0;
-            w.cloth.xPrev = p0;
             sinceReset = 0;
             state.ResumeTiming();
         }

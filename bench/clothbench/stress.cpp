@@ -28,7 +28,7 @@ template <class T> size_t bytesOf(const std::vector<T>& v, bool capacity) {
 }
 
 size_t clothBytes(const Cloth& c, bool capacity = true) {
-    size_t b = bytesOf(c.x, capacity) + bytesOf(c.v, capacity) + bytesOf(c.xPrev, capacity) +
+    size_t b = bytesOf(c.x, capacity) + bytesOf(c.v, capacity) +
                bytesOf(c.invMass, capacity) + bytesOf(c.areaShare, capacity) + bytesOf(c.rest, capacity) +
                bytesOf(c.flags, capacity) + bytesOf(c.particleTris, capacity) + bytesOf(c.springs, capacity) +
                bytesOf(c.springTopo, capacity) + bytesOf(c.bends, capacity) + bytesOf(c.bendEdge, capacity) +

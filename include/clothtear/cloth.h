@@ -1,7 +1,7 @@
 // The cloth: particles, structural springs (triangle edges), bend-shear springs and triangles.
 //
 // Layout (data-oriented, index based, no pointer graph):
-//   particles  : parallel arrays x, v, xPrev, invMass (hot) and mass, rest, flags, particleTris (cold)
+//   particles  : parallel arrays x, v, invMass (hot) and mass, rest, flags, particleTris (cold)
 //   springs    : Spring {a, b, rest, weight} (hot) + SpringTopo {tri[2], bend} (cold), one per edge
 //   bends      : Spring (hot) + owning edge index (cold), one per interior edge (Onal 3.1.2)
 //   triangles  : Triangle {p[3], s[3], uv[3]} with s[i] the spring joining p[i] and p[(i+1)%3]
@@ -46,7 +46,7 @@ struct Triangle {
 
 struct Cloth {
     // ---- particles: hot
-    std::vector<Vec3> x, v, xPrev;
+    std::vector<Vec3> x, v; // m, m/s
     std::vector<float> invMass; // 0 for pinned
     // ---- particles: cold
     std::vector<double> areaShare;  // m^2: one third of the rest area of each incident triangle

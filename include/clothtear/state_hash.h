@@ -8,7 +8,7 @@
 
 namespace clothtear {
 
-// 64-bit FNV-1a over the raw bytes of the live state (positions, velocities, previous positions),
+// 64-bit FNV-1a over the raw bytes of the live state (positions, velocities, Verlet's half kicks),
 // the topology (particles' flags, masses and rest positions, springs, bend-shear springs, triangles
 // with their UVs and rest areas, the topology revision), balls, drivers, time and step count.
 // Field by field, so struct padding never enters it.

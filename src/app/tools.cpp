@@ -107,9 +107,7 @@ void dragAfterStep(World& world, const DragState& drag, size_t pushed, size_t pa
 
 void addVelocity(World& world, Index p, const Vec3& dv) {
     world.wake(); // a sleeping cloth (src/core/sleep.cpp) must feel the push
-    world.cloth.v[p] += dv;
-    // Verlet keeps velocity implicitly in x - xPrev (as World::applyImpulse does).
-    world.cloth.xPrev[p] -= dv * (world.settings.time.frameDt / float(std::max(1, world.settings.time.substeps)));
+    world.cloth.v[p] += dv; // every integrator, Verlet too, keeps its velocity in v
 }
 
 WindSource windSourceAt(const View& view, const Vec2& cursor) {

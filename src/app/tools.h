@@ -76,7 +76,7 @@ WindSource windSourceAt(const View& view, const Vec2& cursor);
 int applyWind(World& world, const WindSource& source, float radiusPx, float pressure, float seconds);
 // Keserica 5.2.1: one-shot velocity change along the view ray; negative dv pulls towards the camera.
 int applyScreenImpulse(World& world, const View& view, const Vec2& cursor, float radiusPx, float dv);
-// Adds dv to a particle's velocity, keeping Verlet's implicit velocity (x - xPrev) consistent.
+// Adds dv to a particle's velocity (and wakes a sleeping cloth).
 void addVelocity(World& world, Index p, const Vec3& dv);
 
 // ---- ball and pin ------------------------------------------------------------------------------------

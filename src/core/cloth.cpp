@@ -143,7 +143,6 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
     c.x.resize(n);
     for (size_t i = 0; i < n; ++i) c.x[i] = c.rest[i].cast<float>();
     c.v.assign(n, Vec3::Zero());
-    c.xPrev = c.x;
     c.invMass.assign(n, 0.f);
     c.areaShare.assign(n, 0.0);
     c.flags.assign(n, 0);

@@ -1,6 +1,8 @@
 // stateHash: FNV-1a (Fowler-Noll-Vo, 64-bit) over the world's state, one field at a time.
 #include "clothtear/state_hash.h"
 
+#include "step/step_state.h"
+
 #include <cstdio>
 #include <type_traits>
 #include <vector>
@@ -38,7 +40,6 @@ uint64_t stateHash(const World& w) {
     Fnv1a h;
     h.array(c.x);
     h.array(c.v);
-    h.array(c.xPrev);
     h.array(c.invMass);
     h.array(c.flags);
     h.array(c.rest);
@@ -80,6 +81,10 @@ uint64_t stateHash(const World& w) {
         h.array(d.particles);
         h.bytes(d.velocity.data(), 3 * sizeof(float));
     }
+    // Integrator state that outlives a step: Verlet's half kicks (its next step reads them).
+    const StepState& state = w.stepState();
+    h.scalar(uint8_t(state.verletRunning));
+    h.array(state.verletKick);
     h.scalar(w.time);
     h.scalar(w.steps);
     return h.value;

@@ -45,7 +45,6 @@ void relieve(Cloth& c, Index holder, Index spring, float target) {
     if (!(excess > 0.f) || !(len > 0.f)) return;
     const Vec3 move = d * (0.5f * excess / len);
     c.x[holder] += move;
-    c.xPrev[holder] += move;
 }
 
 // ================================================================================================ [BASIC]
@@ -87,8 +86,6 @@ bool basicTear(Cloth& c, Index s, float strain, const TearContext& ctx) {
     const Vec3 dir = len > 0.f ? Vec3(d / len) : Vec3::Zero();
     c.x[ma] = c.x[a] + dir * half;
     c.x[mb] = c.x[b] - dir * half;
-    c.xPrev[ma] = c.x[ma] - (c.x[a] - c.xPrev[a]);
-    c.xPrev[mb] = c.x[mb] - (c.x[b] - c.xPrev[b]);
     // v of the copies = v of their side: momentum is conserved because ma takes exactly the mass a
     // loses (one sixth of each split triangle), likewise mb from b.
 

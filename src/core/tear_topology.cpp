@@ -123,7 +123,6 @@ Index appendParticleCopy(Cloth& c, Index from) {
     const Index p = Index(c.x.size());
     c.x.push_back(c.x[from]);
     c.v.push_back(c.v[from]);
-    c.xPrev.push_back(c.xPrev[from]);
     c.invMass.push_back(0.f);
     c.areaShare.push_back(0.0);
     c.rest.push_back(c.rest[from]);

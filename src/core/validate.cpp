@@ -41,7 +41,7 @@ double uvRoundOff(const Vec2d& a, const Vec2d& b, const Vec2d& c) {
 
 std::string validateCloth(const Cloth& c, double expectedArea, double expectedUvArea) {
     const size_t np = c.particleCount(), ns = c.springs.size(), nt = c.triangles.size(), nb = c.bends.size();
-    if (c.v.size() != np || c.xPrev.size() != np || c.invMass.size() != np || c.areaShare.size() != np ||
+    if (c.v.size() != np || c.invMass.size() != np || c.areaShare.size() != np ||
         c.rest.size() != np || c.flags.size() != np || c.particleTris.size() != np)
         return "particle arrays differ in length";
     if (c.springTopo.size() != ns) return "spring arrays differ in length";

@@ -33,7 +33,6 @@ std::string World::rebuild(const MeshData& mesh) {
             const float dy = x.y() - top;
             x = Vec3(x.x(), top + dy * std::cos(a), x.z() - dy * std::sin(a));
         }
-        cloth.xPrev = cloth.x;
     }
     balls.clear();
     drivers.clear();
@@ -97,9 +96,7 @@ int World::applyImpulse(const Vec3& center, float radius, const Vec3& direction,
     int hit = 0;
     for (Index p = 0; p < cloth.particleCount(); ++p) {
         if (cloth.invMass[p] == 0.f || (cloth.x[p] - center).squaredNorm() > radius * radius) continue;
-        cloth.v[p] += dv * dir;
-        // Verlet keeps velocity implicitly in x - xPrev.
-        cloth.xPrev[p] -= dv * dir * (settings.time.frameDt / float(settings.time.substeps));
+        cloth.v[p] += dv * dir; // Verlet too: its state is the velocity (integrate.cpp)
         ++hit;
     }
     return hit;

@@ -108,7 +108,6 @@ void resolveContact(Cloth& cloth, const Triangle& tri, const Vec3& bary, Ball& b
         const Vec3 dv = impulse * w[i];
         cloth.x[p] += dx;
         cloth.v[p] += dv;
-        cloth.xPrev[p] += dx - dv * dt; // Verlet: the push is not a velocity, the impulse is
     }
 }
 
@@ -328,7 +327,6 @@ void collideGround(Cloth& cloth, const CollisionSettings& s, float dt) {
                 if (vtLen > 0.f) dv -= vt * (std::min(vtLen, s.friction * vn) / vtLen);
             }
             v += dv;
-            cloth.xPrev[p] += Vec3(0.f, dy, 0.f) - dv * dt;
         }
     });
 }

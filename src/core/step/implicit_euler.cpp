@@ -157,7 +157,6 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
     C.lastError = cg.error();
 
     for (Index p = 0; p < n; ++p) {
-        cloth.xPrev[p] = cloth.x[p];
         if (C.row[p] < 0)
             continue;
         const V3 v = (cloth.v[p].cast<double>() + C.dv.segment<3>(C.row[p])) * double(in.keep);

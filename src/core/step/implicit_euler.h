@@ -47,7 +47,7 @@ struct ImplicitEulerOptions {
     int maxIterations = 200;
 };
 
-// One sub-step: x, v of every free particle. xPrev gets x before the step.
+// One sub-step: x, v of every free particle.
 void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const ImplicitEulerOptions& options,
                        ImplicitEulerCache& cache);
 

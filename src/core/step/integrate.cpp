@@ -10,7 +10,6 @@ namespace clothtear {
 void moveDrivers(const StepContext& ctx, Cloth& cloth, StepState& state) {
     for (const Driver& d : *ctx.drivers)
         for (Index p : d.particles) {
-            cloth.xPrev[p] = cloth.x[p];
             cloth.x[p] += d.velocity * ctx.dt;
             cloth.v[p] = d.velocity;
             if (p < state.packed.size())
@@ -38,7 +37,7 @@ struct IntegrateParams {
 // moves a particle in between) and gets the new ones (the strain scan and the tethers read them).
 template <Integrator I, int NB>
 void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, const IntegrateParams& P, Vec3* x,
-                    Vec3* v, Vec3* xPrev, PackedParticle* packed, const float* invMass) {
+                    Vec3* v, PackedParticle* packed, const float* invMass) {
     using V4 = Eigen::Vector4f;
     const V4 g(P.g.x(), P.g.y(), P.g.z(), 0.f);
     const int count = NB >= 0 ? NB : nb;
@@ -73,7 +72,6 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, con
             const V4 step = (P.verletKeep * P.keep * P.dt) * (vn - kickPrev) + a * (P.dt * P.dt);
             const V4 kick = a * (0.5f * P.dt);
             P.verletKick[p] = kick.head<3>();
-            xPrev[p] = xn.head<3>();
             vn = step * (1.f / P.dt) + kick;
             xn += step;
         }
@@ -86,7 +84,7 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, con
 
 // One chunk of particles, split where the set of force buffers that cover it changes.
 template <Integrator I>
-void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Vec3* xPrev, PackedParticle* packed,
+void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, PackedParticle* packed,
                          const float* invMass, std::vector<std::vector<Eigen::Vector4f>>& acc,
                          const std::array<size_t, 2>* ranges) {
     std::vector<size_t> cuts{c.begin, c.end};
@@ -102,10 +100,10 @@ void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Vec3* 
         for (size_t k = 0; k < acc.size(); ++k)
             if (ranges[k][0] <= b && ranges[k][1] >= e) buf[nb++] = acc[k].data();
         switch (nb) {
-        case 0: integrateRange<I, 0>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
-        case 1: integrateRange<I, 1>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
-        case 2: integrateRange<I, 2>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
-        default: integrateRange<I, -1>(b, e, buf, nb, P, x, v, xPrev, packed, invMass); break;
+        case 0: integrateRange<I, 0>(b, e, buf, nb, P, x, v, packed, invMass); break;
+        case 1: integrateRange<I, 1>(b, e, buf, nb, P, x, v, packed, invMass); break;
+        case 2: integrateRange<I, 2>(b, e, buf, nb, P, x, v, packed, invMass); break;
+        default: integrateRange<I, -1>(b, e, buf, nb, P, x, v, packed, invMass); break;
         }
     }
 }
@@ -134,7 +132,6 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
     P.dt = ctx.dt;
     Vec3* x = cloth.x.data();
     Vec3* v = cloth.v.data();
-    Vec3* xPrev = cloth.xPrev.data();
     const float* invMass = cloth.invMass.data();
     PackedParticle* packed = state.packed.data();
     auto& acc = state.threads.acc;
@@ -143,13 +140,13 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
         const Chunk c = chunkOf(n, t, nt);
         switch (ctx.integrator) {
         case Integrator::SemiImplicitEuler:
-            integrateKernel<Integrator::SemiImplicitEuler>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
+            integrateKernel<Integrator::SemiImplicitEuler>(c, P, x, v, packed, invMass, acc, ranges);
             break;
         case Integrator::ForwardEuler:
-            integrateKernel<Integrator::ForwardEuler>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
+            integrateKernel<Integrator::ForwardEuler>(c, P, x, v, packed, invMass, acc, ranges);
             break;
         case Integrator::Verlet:
-            integrateKernel<Integrator::Verlet>(c, P, x, v, xPrev, packed, invMass, acc, ranges);
+            integrateKernel<Integrator::Verlet>(c, P, x, v, packed, invMass, acc, ranges);
             break;
         default: break; // the references go through phaseIntegrateReference
         }

@@ -154,7 +154,7 @@ namespace clothtear {
 // the Jacobi passes (addCorrection in limit_kernels.h): with the move delta = s d (d = x_p - x_a,
 // s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0, is cancelled up to |delta| / dt:
 //   v += delta * min(1 / dt, (v.d) / (-s |d|^2)).
-// Without velocityFix (Verlet, whose velocity is the position change (x - x_prev) / dt) the move
+// Without velocityFix (Verlet, whose velocity is the position change over dt) the move
 // is all velocity: v += delta / dt.
 inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const float* length, const uint8_t* cut,
                          float maxRatio, float dt, bool velocityFix, const PackedParticle* packed, Vec3* x, Vec3* v) {

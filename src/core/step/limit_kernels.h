@@ -26,7 +26,7 @@ inline constexpr float kTetherSlack = 1e-2f;
 struct CorrectionParams {
     float relaxation;    // limit.relaxation
     float dt;            // s
-    bool velocityFix;    // inelastic fix; off for Verlet, whose v is (x - x_prev) / dt: a move is a velocity
+    bool velocityFix;    // inelastic fix; off for Verlet, whose v is its position change over dt: a move is a velocity
 };
 
 // Corrections of one thread: xyz sum and the number of springs in w.

@@ -48,7 +48,6 @@ void xpbdStep(Cloth& cloth, const ReferenceStepInput& in, std::vector<Vec3>& dx)
     }
     const float invDt = 1.f / dt;
     for (Index p = 0; p < n; ++p) {
-        cloth.xPrev[p] = x[p];
         if (w[p] == 0.f)
             continue;
         v[p] = dx[p] * invDt;

@@ -23,7 +23,7 @@
 
 namespace clothtear {
 
-// One sub-step. `dx` is scratch (resized here). xPrev gets x before the step.
+// One sub-step. `dx` is scratch (resized here).
 void xpbdStep(Cloth& cloth, const ReferenceStepInput& in, std::vector<Vec3>& dx);
 
 } // namespace clothtear
