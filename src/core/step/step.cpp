@@ -139,47 +139,27 @@ void World::substep() {
     auto check = [&](int afterPhase) {
         if (ctx.checkFinite) checkFinite(*this, state, afterPhase);
     };
+    // Runs phase p when `on`, timed; then the finite check at its boundary (forces has none: it
+    // only sizes buffers).
+    auto phase = [&](Phase p, bool on, auto&& body) {
+        if (on) {
+            PhaseTimer t(profile, p);
+            body();
+        }
+        if (p != Phase::Forces) check(int(p));
+    };
     check(-1);
-    {
-        PhaseTimer t(profile, Phase::Forces);
-        phaseForces(ctx, cloth, state);
-    }
-    if (!ctx.reference) {
-        PhaseTimer t(profile, Phase::Springs);
-        phaseSprings(ctx, cloth, state);
-    }
-    check(int(Phase::Springs));
-    if (ctx.windBlows) {
-        PhaseTimer t(profile, Phase::Wind);
-        phaseWind(ctx, cloth, state);
-    }
-    check(int(Phase::Wind));
-    {
-        PhaseTimer t(profile, Phase::Integrate);
+    phase(Phase::Forces, true, [&] { phaseForces(ctx, cloth, state); });
+    phase(Phase::Springs, !ctx.reference, [&] { phaseSprings(ctx, cloth, state); });
+    phase(Phase::Wind, ctx.windBlows, [&] { phaseWind(ctx, cloth, state); });
+    phase(Phase::Integrate, true, [&] {
         if (ctx.reference) phaseIntegrateReference(ctx, cloth, state);
         else phaseIntegrate(ctx, cloth, state);
-    }
-    check(int(Phase::Integrate));
-    if (ctx.collide) {
-        PhaseTimer t(profile, Phase::Collide);
-        phaseCollide(ctx, cloth, state);
-    }
-    check(int(Phase::Collide));
-    if (ctx.scan) {
-        PhaseTimer t(profile, Phase::Limit);
-        phaseLimit(ctx, cloth, state);
-    }
-    check(int(Phase::Limit));
-    if (ctx.contact) {
-        PhaseTimer t(profile, Phase::Contact);
-        phaseContact(ctx, cloth, state);
-    }
-    check(int(Phase::Contact));
-    if (ctx.tearing && !state.tearCandidates.empty()) {
-        PhaseTimer t(profile, Phase::Tear);
-        phaseTear(ctx, cloth, state);
-    }
-    check(int(Phase::Tear));
+    });
+    phase(Phase::Collide, ctx.collide, [&] { phaseCollide(ctx, cloth, state); });
+    phase(Phase::Limit, ctx.scan, [&] { phaseLimit(ctx, cloth, state); });
+    phase(Phase::Contact, ctx.contact, [&] { phaseContact(ctx, cloth, state); });
+    phase(Phase::Tear, ctx.tearing && !state.tearCandidates.empty(), [&] { phaseTear(ctx, cloth, state); });
     time += ctx.dt;
     profile.substeps++;
 }
