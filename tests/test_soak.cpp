@@ -1,5 +1,5 @@
 // The soak (src/cli/soak.h) and what it found: each finding is a test here, with the numbers it had.
-#include "cli/soak.h"
+#include "soak.h"
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
 

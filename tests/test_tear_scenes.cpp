@@ -1,8 +1,7 @@
 // The thesis ball experiments (Onal 4.1) and the pull/tension scenes, checked through the headless
 // runner's JSON report (the same path a user takes).
-#include "cli/runner.h"
-
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -20,9 +20,12 @@ if [[ -z "$cxx" ]]; then
   echo "clothtear: fuzzing skipped: clang++ not found (tools/install-deps.sh installs clang-14)"
   exit 0
 fi
+# The configure log goes inside the build tree: beside it, a build dir such as build6-fuzz left
+# build6-fuzz.configure.log in the repository's root.
+mkdir -p "$build"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
   -DCMAKE_CXX_COMPILER="$cxx" -DCLOTHTEAR_FUZZ=ON -DCLOTHTEAR_BUILD_APP=OFF -DCLOTHTEAR_BUILD_TESTS=OFF \
-  -DCLOTHTEAR_BUILD_BENCH=OFF -DCLOTHTEAR_OPENMP=OFF > "$build.configure.log" 2>&1 || { cat "$build.configure.log"; exit 1; }
+  -DCLOTHTEAR_BUILD_BENCH=OFF -DCLOTHTEAR_OPENMP=OFF > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 mkdir -p "$build/artifacts"
 

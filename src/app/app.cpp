@@ -11,6 +11,7 @@
 #include "controls.h"
 #include "image_io.h"
 #include "panel.h"
+#include "runner.h"
 
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
@@ -53,7 +54,7 @@ constexpr int kWindowWidth = 1280, kWindowHeight = 720;
 
 // ============================================================================================== [RUN]
 
-int App::run(const CliOptions& options) {
+int App::run(const AppOptions& options) {
     options_ = options;
     state_.overrides = options.sets;
     if (!options.script.empty()) {

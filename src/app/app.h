@@ -5,10 +5,10 @@
 //                  hotkeys, camera and tools
 //   app_sim.cpp    scene loading, rebuilds, the fixed-step simulation and the stats
 #pragma once
+#include "app_options.h"
 #include "app_state.h"
 #include "input_state.h"
 #include "renderer.h"
-#include "cli/runner.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +19,7 @@ namespace clothtear::app {
 class App {
 public:
     // Runs the window until it is closed, --frames are done or the script ended. Exit status.
-    int run(const CliOptions& options);
+    int run(const AppOptions& options);
 
 private:
     // app.cpp
@@ -47,7 +47,7 @@ private:
     void trackBalls();
     void updateStats(double now);
 
-    CliOptions options_;
+    AppOptions options_;
     GLFWwindow* window_ = nullptr;
     World world_;
     AppState state_;

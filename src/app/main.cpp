@@ -1,6 +1,7 @@
 // `clothtear` with the desktop app: opens the window, or runs headless with --headless.
 #include "app.h"
-#include "cli/runner.h"
+#include "app_options.h"
+#include "runner.h"
 
 #include <cstdlib>
 #include <thread>
@@ -9,9 +10,8 @@
 #endif
 
 int main(int argc, char** argv) {
-    clothtear::CliOptions options;
-    if (int status = clothtear::parseCommandLine(argc, argv, options, /*appAvailable=*/true); status >= 0)
-        return status;
+    clothtear::app::AppOptions options;
+    if (int status = clothtear::app::parseAppOptions(argc, argv, options); status >= 0) return status;
     if (options.headless) return clothtear::runHeadless(options);
 #ifdef _OPENMP
     // A software renderer (Mesa's llvmpipe) draws on the CPU cores too. On a machine with two or

@@ -1,87 +1,16 @@
-// Headless runner: parse, load the scene, step, report.
+// Headless runner: load the scene, step, report.
 #include "runner.h"
 
-#include "clothtear/config_file.h"
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 
 namespace clothtear {
-
-int parseCommandLine(int argc, char** argv, CliOptions& o, bool appAvailable) {
-    CLI::App app{"clothtear: interactive cloth tearing (Onal 2013) and its headless runner"};
-    app.add_flag("--headless", o.headless, "Run without a window and print/write a report");
-    app.add_option("--scene", o.scene, "Scene name (see --list-scenes) or obj:PATH");
-    app.add_option("--seconds", o.seconds, "Simulated seconds to run (headless)")
-        ->check(CLI::Number) // "not a number" before "not in range" for text
-        ->check(CLI::Range(0.0, 1e6));
-    app.add_option("--set", o.sets, "Set a parameter: --set key=value (repeatable; see --list-params)");
-    app.add_option("--config", o.config, "Read the scene and parameters from FILE ('key = value' lines, # comments)");
-    app.add_option("--json", o.json, "Write the JSON report to FILE ('-' for stdout)");
-    app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
-    app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
-    app.add_flag("--version", o.version, "Print the version and exit");
-    if (appAvailable) {
-        app.add_option("--frames", o.frames, "App: run N frames, then exit")->check(CLI::Number)->check(CLI::Range(0, 100000000));
-        app.add_option("--screenshot", o.screenshot, "App: write a PNG of the last frame to FILE");
-        app.add_option("--script", o.script, "App: replay an input script");
-        app.add_option("--record", o.record, "App: record input to a script file");
-    }
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        std::cout << app.help();
-        return 0;
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "clothtear: " << e.what() << " (see --help)\n";
-        return 2;
-    }
-    if (o.version) {
-        std::cout << "clothtear " << CLOTHTEAR_VERSION << "\n";
-        return 0;
-    }
-    if (o.listScenes) {
-        for (const SceneDef& s : allScenes()) std::cout << s.name << "\t" << s.description << "\n";
-        std::cout << "obj:PATH\tCurtain made from an OBJ file (v, vt, f)\n";
-        return 0;
-    }
-    if (o.listParams) {
-        std::cout << paramsMarkdown();
-        return 0;
-    }
-    // The window app's options mean nothing without a window: refuse them rather than ignore them.
-    if (o.headless)
-        for (const char* option : {"--frames", "--screenshot", "--script", "--record"})
-            if (appAvailable && app.count(option)) {
-                std::cerr << "clothtear: " << option << " needs the window app; drop --headless (no display: "
-                          << "xvfb-run -a clothtear ...)\n";
-                return 2;
-            }
-    // The config file comes first: --scene and --set on the command line win over it.
-    if (app.count("--config")) {
-        Result<ConfigFile> config = loadConfig(o.config);
-        if (!config.ok()) {
-            std::cerr << "clothtear: " << config.error << "\n";
-            return 2;
-        }
-        if (!config.value.scene.empty() && !app.count("--scene")) o.scene = config.value.scene;
-        o.sets.insert(o.sets.begin(), config.value.assignments.begin(), config.value.assignments.end());
-    }
-    // Check every --set now, so bad input fails before any work with one clear message.
-    Settings probe;
-    for (const std::string& s : o.sets)
-        if (std::string err = applyAssignment(probe, s); !err.empty()) {
-            std::cerr << "clothtear: --set " << s << ": " << err << "\n";
-            return 2;
-        }
-    return -1;
-}
 
 nlohmann::json makeReport(const World& w, const std::string& scene, double wallSeconds) {
     using nlohmann::json;
@@ -148,7 +77,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
     };
 }
 
-int runHeadless(const CliOptions& o) {
+int runHeadless(const RunOptions& o) {
     World world;
     if (std::string err = loadScene(world, o.scene, o.sets); !err.empty()) {
         std::cerr << "clothtear: " << err << "\n";

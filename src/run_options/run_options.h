@@ -1,0 +1,48 @@
+// Run options: the command line every `clothtear` shares, with or without the window app.
+//
+//   --headless --scene NAME --seconds S --set key=value --config FILE --json FILE
+//   --list-scenes --list-params --version --help
+//
+// parseRunOptions reads them with CLI11, answers --help, --version and the lists, folds the config
+// file in (the command line wins over it) and checks every --set, so bad input fails before any work
+// with one clear line. A front end with options of its own (the window app: src/app/app_options.h)
+// registers them through RunOptionsExtension; this library and the headless runner know nothing of
+// them, and a build without the app does not list them (CLI11 refuses them as unknown).
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace clothtear {
+
+struct RunOptions {
+    bool headless = false;         // --headless: no window; run, then print or write the report
+    std::string scene = "curtain"; // --scene: a name of --list-scenes or obj:PATH
+    double seconds = 5.0;          // --seconds: simulated seconds of a headless run
+    std::vector<std::string> sets; // key=value, in order: the --config file's first, then --set
+    std::string config;            // --config FILE ("" for none); already folded into scene and sets
+    std::string json;              // report path, "-" for stdout, "" for none
+    bool listScenes = false;
+    bool listParams = false;
+    bool version = false;
+};
+
+// What a front end adds to the shared options.
+struct RunOptionsExtension {
+    // Registers the front end's options on the parser, after the shared ones (--help lists them so).
+    std::function<void(CLI::App&)> add;
+    // Runs after --version and the lists were answered and before the config file is read. Returns
+    // "" to go on, or why this combination is refused (one line, printed as "clothtear: <why>", exit 2).
+    std::function<std::string(const CLI::App&, const RunOptions&)> check;
+};
+
+// Parses argv into `options` (and the extension's own variables). Returns -1 to go on, or an exit
+// status: 0 after --help, --version, --list-scenes or --list-params (answered on stdout), 2 on bad
+// input (one line on stderr).
+int parseRunOptions(int argc, char** argv, RunOptions& options, const RunOptionsExtension& extension = {});
+
+} // namespace clothtear
