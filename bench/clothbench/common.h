@@ -21,6 +21,14 @@ struct BenchOptions {
     int threads = 1;               // OpenMP threads for the timed runs of every mode but `peers`
     std::string accuracyScene;     // accuracy mode: only this scene ("" = every scene)
     std::string commandLine;       // how this run was started, written into every plot
+    // holds mode (issue 12)
+    std::vector<double> holdsSizes; // m, cloth sizes of the grid table ({} = 0.4, 2, 6)
+    std::vector<int> holdsRes;      // particles a side of the grid table ({} = 33, 65)
+    bool holds129 = false;          // grid table: also 129 a side (slow)
+    bool holds257 = false;          // grid table: also the 2 m cloth at 257 a side (slow)
+    std::string holdsTables = "all"; // grid, loaded, sag (any of them, comma separated) or all
+    std::vector<std::string> sets;  // KEY=VALUE applied to every run of the mode (a candidate solver)
+    std::string tag;                // suffix of the CSV file name (holds_TAG.csv)
 };
 
 // Loads a scene with overrides; a bad name or override is a bug in clothbench itself, so it throws
@@ -59,5 +67,6 @@ int runStatic(const BenchOptions& options);
 int runSkipping(const BenchOptions& options);
 int runStress(const BenchOptions& options);
 int runPeers(const BenchOptions& options);
+int runHolds(const BenchOptions& options);
 
 } // namespace clothtear::bench

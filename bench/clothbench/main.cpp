@@ -7,7 +7,8 @@
 // against stiffness and density), static (equilibrium against the static solve, mesh refinement),
 // skipping (per-phase timings, what skipping, sleeping and the ball broad phase save), stress (a
 // long randomized tearing run: invariants and memory), peers (Bullet soft-body cloth, memory
-// bandwidth bound), all (every mode but stress).
+// bandwidth bound), holds (issue 12: does the cloth hold at every size, resolution, pin and load;
+// holds.cpp), all (every mode but stress and holds).
 #include "common.h"
 
 #include <CLI/CLI.hpp>
@@ -64,9 +65,9 @@ int main(int argc, char** argv) {
     std::string mode;
     CLI::App app{
         "clothbench: run time against error, stability, static accuracy, skipping, stress and peers"};
-    app.add_option("--mode", mode, "accuracy | stability | static | skipping | stress | peers | all")
+    app.add_option("--mode", mode, "accuracy | stability | static | skipping | stress | peers | holds | all")
         ->required()
-        ->check(CLI::IsMember({"accuracy", "stability", "static", "skipping", "stress", "peers", "all"}));
+        ->check(CLI::IsMember({"accuracy", "stability", "static", "skipping", "stress", "peers", "holds", "all"}));
     app.add_option("--out", o.out, "Folder for the CSV and SVG files (created if missing)");
     app.add_flag("--quick", o.quick, "Fewer points and shorter runs (smoke run)");
     app.add_option("--threads", o.threads, "OpenMP threads for the timed runs (peers: both 1 and this)")
@@ -78,6 +79,17 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.1, 36000.0));
     app.add_option("--stress-resolution", o.stressResolution, "Stress mode: particles per side")
         ->check(CLI::Range(4, 512));
+    app.add_option("--sizes", o.holdsSizes, "Holds mode: cloth sizes in m (default 0.4,2,6)")
+        ->delimiter(',')
+        ->check(CLI::Range(0.05, 100.0));
+    app.add_option("--res", o.holdsRes, "Holds mode: particles a side of the grid table (default 33,65)")
+        ->delimiter(',')
+        ->check(CLI::Range(3, 1024));
+    app.add_flag("--holds-129", o.holds129, "Holds mode: also 129 particles a side (slow)");
+    app.add_flag("--holds-257", o.holds257, "Holds mode: also the 2 m cloth at 257 a side (slow)");
+    app.add_option("--tables", o.holdsTables, "Holds mode: grid, loaded, sag (comma separated) or all");
+    app.add_option("--set", o.sets, "Holds mode: KEY=VALUE for every run (repeatable), e.g. limit.solver=xpbd");
+    app.add_option("--tag", o.tag, "Holds mode: CSV name suffix (holds_TAG.csv)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -97,7 +109,8 @@ int main(int argc, char** argv) {
     }
     const std::map<std::string, int (*)(const BenchOptions&)> modes = {
         {"accuracy", runAccuracy}, {"stability", runStability}, {"static", runStatic},
-        {"skipping", runSkipping}, {"stress", runStress},       {"peers", runPeers}};
+        {"skipping", runSkipping}, {"stress", runStress},       {"peers", runPeers},
+        {"holds", runHolds}};
     std::cout << "clothbench: " << o.commandLine << "\nmachine: " << machineDescription() << "\n";
     try {
         if (mode != "all")
