@@ -1,4 +1,5 @@
-// Wind against its formula (Onal 2.2 after Keserica 2.3; the step's wind phase). Per triangle
+// Wind against its formula (the step's wind phase; Onal lists wind among the external forces).
+// Per triangle
 //   F = c A (n . v_rel) |n . v_rel| n,   v_rel = wind - mean corner velocity,   A = min(area, 2 rest area),
 // a third on each corner, with wind = speed x gust factor x direction and the gust factor
 //   1 + gust (0.65 sin(ph) + 0.35 sin(2.37 ph + 1.3)),   ph = 2 pi f t.
@@ -93,8 +94,9 @@ void expectCornersGain(World& w, const Vec3& n, double dv, const std::string& wh
     for (Index p = 0; p < 3; ++p) {
         const Vec3 gained = w.cloth.v[p] - v0[p];
         EXPECT_NEAR(gained.dot(n), dv, 1e-5 * std::abs(dv) + 1e-7) << what << ", corner " << p;
-        if (!springsAtWork)
+        if (!springsAtWork) {
             EXPECT_NEAR((gained - gained.dot(n) * n).norm(), 0.0, 1e-6) << what << ": wind acts along the normal only";
+        }
     }
 }
 
