@@ -1,6 +1,7 @@
 // The `clothtear` binary as a user runs it: bad input exits with status 2 and one clear message,
 // and a headless run writes the JSON report with the documented fields.
 #include "cli_harness.h"
+#include "clothtear/scenes.h"
 #include "clothtear/world.h"
 
 #include <nlohmann/json.hpp>
@@ -61,8 +62,25 @@ TEST_F(CliTest, HeadlessRunWritesTheJsonReport) {
     EXPECT_EQ(j["bend_springs"], springs - border);
     EXPECT_NEAR(j["total_mass"].get<double>(), 0.2 * 4.0, 1e-6);
     EXPECT_NEAR(j["rest_area"].get<double>(), 4.0, 1e-9);
-    EXPECT_GE(j["max_strain"].get<double>(), 0.0);
-    EXPECT_LT(j["max_strain"].get<double>(), 0.2); // the limit holds a hanging curtain near 10%
+    // max_strain: the largest (length - rest) / rest over the structural springs at the end. The
+    // same run in this process, measured from the positions, gives the value itself. Physically:
+    // the top row carries the weight below it, rho g H = 3.9 N per metre of width, on springs of
+    // S = 60 N/m per metre (vertical ones, weight 1) plus S / 4 along the vertical (the diagonals),
+    // a static strain of 3.9 / 75 = 0.052 (the settled curtain's top row: 0.057). Falling from rest
+    // at strain 0 the curtain swings about that; where it first hits the 10% limit (0.15 s in) the
+    // limit's inelastic correction takes most of the swing out, so at 0.5 s it is at least half of it
+    // (measured: 0.067, never below 0.058 from 0.4 s on). The limit holds it near 10% from above.
+    const double maxStrain = j["max_strain"].get<double>();
+    clothtear::World same;
+    ASSERT_EQ(clothtear::loadScene(same, "curtain"), "");
+    for (int f = 0; f < 30; ++f)
+        same.step();
+    double measured = 0;
+    for (const clothtear::Spring& s : same.cloth.springs)
+        measured = std::max(measured, double((same.cloth.x[s.b] - same.cloth.x[s.a]).norm()) / s.rest - 1.0);
+    EXPECT_NEAR(maxStrain, measured, 1e-6);
+    EXPECT_GT(maxStrain, 0.5 * 0.2 * 9.81 * 2.0 / (1.25 * 60.0));
+    EXPECT_LT(maxStrain, 0.2);
     EXPECT_EQ(j["finite"], true);
     EXPECT_GE(j["ms_per_step"].get<double>(), 0.0);
 

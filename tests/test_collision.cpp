@@ -145,14 +145,13 @@ TEST(Collision, BallAndFreeClothExchangeMomentum) {
 // the default sub-steps (tearing off so the cloth cannot legitimately let it through). After 1 s
 // the ball must still be on its own side of the cloth surface under it, and slower.
 //
-// Disabled: it fails today, from either side, for balls heavier than a few tens of grams (0.84 kg
-// here). What happens (traced sub-step by sub-step): the contact pushes the struck cloth ahead of the
-// ball by position only, the Provot pass cannot pull it back against that (strain under the ball
-// reaches 4-7 while the ball keeps ~85% of its speed), the over-stretched springs then snap a
-// triangle back through the ball centre within one sub-step (integrate + limit), and the contact,
-// which decides the side from the ball's own segment against the triangle's new position, pushes it
-// out on the far side. Needs the ball in the limit/contact iterations (contacts solved with the
-// ball's mass together with the length constraints) and a relative (cloth-moving) swept test.
+// It used to fail, from either side, for balls heavier than a few tens of grams (0.84 kg here): the
+// contact pushed the struck cloth ahead of the ball, the limit snapped a triangle back through the
+// ball centre, and a side judged from the ball's segment alone put the ball out on the far side.
+// What holds it now (collide.cpp): sides are judged relative to the moving cloth (the ball's start
+// against where the triangle started), the limit lets a ball stretch the springs it touches up to
+// the tear threshold, and the contact phase after the limit makes the ball give way where the
+// cloth held.
 TEST(Collision, FastBallDoesNotPassThroughTheCurtain) {
     for (float side : {1.f, -1.f}) {
         World w;

@@ -1,5 +1,6 @@
 // Determinism: the same scene, parameters and interaction give a bit-identical state (stateHash)
-// run after run, single-threaded and multi-threaded.
+// run after run, single-threaded and multi-threaded. These compare a run with itself; the pinned
+// golden hashes that detect a changed result are in test_golden_hash.cpp.
 //
 // The hash depends on the thread count: each thread sums its springs' forces and limit corrections
 // into its own buffer and the buffers are added in thread order, so 1 and 2 threads add the same
@@ -67,6 +68,10 @@ const Case kCases[] = {
 
 } // namespace
 
+// Repeatability, not correctness: the same run twice in one process gives the same state hash, so
+// nothing in the step depends on timing, uninitialized memory, addresses or leftover state. Both
+// runs execute the same code, so a wrong change to the step passes this; the golden hashes
+// (Determinism.GoldenHashesAreUnchanged, test_golden_hash.cpp) are what catch a change.
 TEST(Determinism, SameRunSameHashSingleThreaded) {
     for (const Case& c : kCases) {
         const uint64_t a = runHash(c.scene, c.sets, c.frames, 1), b = runHash(c.scene, c.sets, c.frames, 1);
@@ -74,6 +79,8 @@ TEST(Determinism, SameRunSameHashSingleThreaded) {
     }
 }
 
+// The same with two threads: the split of the work is fixed by the thread count, never by timing,
+// so two threads repeat too (their hash differs from one thread's; see the top of this file).
 TEST(Determinism, SameRunSameHashMultiThreaded) {
     for (int threads : {2})
         for (const Case& c : kCases) {

@@ -4,9 +4,9 @@
 //
 // Section index:
 //   [HELPERS]      quiet settings, tiny meshes
-//   [OSCILLATOR]   period of one free corner held by two springs
-//   [FREEFALL]     discrete free-fall formula
-//   [MOMENTUM]     total momentum without external forces
+//   [OSCILLATOR]   period of one free corner held by two springs; damped, in both spring kernels
+//   [FREEFALL]     discrete free-fall formula; air drag
+//   [MOMENTUM]     total momentum without external forces; the centre of mass under the limit
 //   [ENERGY]       semi-implicit vs forward Euler
 //   [LIMIT]        Provot length limiting
 //   [REST]         bend-shear rest lengths, total mass and area
@@ -67,6 +67,13 @@ Vec3d totalMomentum(const World& w) {
     for (Index i = 0; i < w.cloth.particleCount(); ++i)
         p += w.cloth.particleMass(i) * w.cloth.v[i].cast<double>();
     return p;
+}
+
+double maxStructuralStrain(const World& w) {
+    double worst = 0;
+    for (const Spring& s : w.cloth.springs)
+        worst = std::max(worst, double((w.cloth.x[s.b] - w.cloth.x[s.a]).norm()) / s.rest - 1.0);
+    return worst;
 }
 
 double totalEnergy(const World& w) {
@@ -148,6 +155,83 @@ TEST(Physics, SpringMassOscillatorMatchesTheAnalyticPeriod) {
     }
 }
 
+// The same oscillator with stretch damping D (N s/m): each spring adds kd (v . n) n with
+// kd = D x weight, so C obeys m u'' = -K u - B u' with B = 2 kd (h / L)^2 and decays at
+//   gamma = B / (2 m) = 3 D h^2 / (rho L^4)
+// while it swings at omega_d = sqrt(omega^2 - gamma^2). Semi-implicit Euler multiplies the amplitude
+// by sqrt(1 - 2 gamma dt) per step: gamma dt = 7.5e-4 relative error here.
+// `copies` side-by-side triangles: the spring kernel takes springs four at a time (SIMD) and the
+// rest one at a time, so one triangle (3 springs) runs the scalar loop, four (12 springs) the
+// vector one. Both must give the analytic rate and period.
+struct DampedRun {
+    double gamma = 0;  // 1/s, from the decay of successive peaks
+    double period = 0; // s, from the zero crossings
+};
+
+DampedRun measureDampedOscillator(int copies, double h, float stiffness, float damping, float density) {
+    World w;
+    w.settings = quietSettings();
+    w.settings.material.stretchStiffness = stiffness;
+    w.settings.material.stretchDamping = damping;
+    w.settings.material.density = density;
+    w.settings.time.frameDt = 0.01f;
+    w.settings.time.substeps = 10; // dt = 1 ms
+    std::vector<Vec3d> positions;
+    std::vector<std::array<Index, 3>> triangles;
+    for (int i = 0; i < copies; ++i) {
+        const double x0 = 3.0 * i;
+        positions.insert(positions.end(), {{x0 - 1, 0, 0}, {x0 + 1, 0, 0}, {x0, h, 0}});
+        triangles.push_back({Index(3 * i), Index(3 * i + 1), Index(3 * i + 2)});
+    }
+    EXPECT_EQ(w.rebuild(meshOf(positions, triangles)), "");
+    EXPECT_EQ(w.cloth.springs.size(), size_t(3 * copies));
+    std::vector<Index> tips;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+        if (w.cloth.rest[p].y() == 0.0) w.cloth.setPinned(p, true);
+        else tips.push_back(p);
+    }
+    const float amplitude = 1e-3f * float(std::sqrt(1.0 + h * h));
+    for (Index p : tips)
+        w.cloth.x[p].y() += amplitude;
+    const Index tip = tips.back(); // the last copy: in the vector loop when there are four
+    const double restY = h, dt = 1e-3;
+    std::vector<double> u{w.cloth.x[tip].y() - restY}, crossings, peakT, peakU;
+    for (int n = 1; n <= 3000; ++n) {
+        w.substep();
+        u.push_back(w.cloth.x[tip].y() - restY);
+        for (Index p : tips)
+            EXPECT_EQ(w.cloth.x[p].y(), w.cloth.x[tip].y()) << "every copy swings alike";
+        const double a = u[n - 1], b = u[n];
+        if ((a > 0) != (b > 0))
+            crossings.push_back(dt * (n - 1 + a / (a - b)));
+        if (n >= 2 && u[n - 1] > u[n - 2] && u[n - 1] >= u[n]) {
+            peakT.push_back(dt * (n - 1));
+            peakU.push_back(u[n - 1]);
+        }
+    }
+    DampedRun r;
+    EXPECT_GE(peakU.size(), 5u);
+    EXPECT_GE(crossings.size(), 10u);
+    if (peakU.size() < 2 || crossings.size() < 2)
+        return r;
+    r.gamma = std::log(peakU.front() / peakU.back()) / (peakT.back() - peakT.front());
+    r.period = 2.0 * (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+    return r;
+}
+
+TEST(Physics, SpringDampingDecaysAtTheAnalyticRateInBothSpringKernels) {
+    const double h = 1.0, L2 = 2.0;
+    const float S = 60.f, D = 0.2f, rho = 0.2f;
+    const double gamma = 3.0 * D * h * h / (rho * L2 * L2); // 0.75 1/s
+    const double omega2 = 6.0 * S * h * h / (rho * L2 * L2);
+    const double period = 2.0 * M_PI / std::sqrt(omega2 - gamma * gamma);
+    for (int copies : {1, 4}) {
+        const DampedRun r = measureDampedOscillator(copies, h, S, D, rho);
+        EXPECT_NEAR(r.gamma, gamma, 0.02 * gamma) << copies << " triangle(s)";
+        EXPECT_NEAR(r.period, period, 0.01 * period) << copies << " triangle(s)";
+    }
+}
+
 // ========================================================================================= [FREEFALL]
 
 // With every particle at rest and the springs at their rest length, a free cloth is a set of
@@ -196,6 +280,36 @@ TEST(Physics, FreeFallFollowsTheDiscreteFormulaToRoundOff) {
     EXPECT_LT(worstXZ, 1e-5);
     RecordProperty("free_fall_worst_y_error_m", std::to_string(worstY));
     RecordProperty("free_fall_worst_v_error_m_per_s", std::to_string(worstV));
+}
+
+// Air drag alone on a free cloth moving as one (no springs at work, no gravity). Physical drag
+// F = -c A v on each particle's area share is a = -(c / rho) v, and semi-implicit Euler gives
+// v_N = v_0 (1 - (c / rho) dt)^N; Keserica's model removes a fraction f per sub-step:
+// v_N = v_0 (1 - f)^N. To float round-off, on every particle.
+TEST(Physics, AirDragSlowsAFreeClothGeometrically) {
+    for (AirModel model : {AirModel::Drag, AirModel::Keserica}) {
+        World w;
+        w.settings = quietSettings();
+        w.settings.material.stretchStiffness = 0.f;
+        w.settings.material.bendStiffness = 0.f;
+        w.settings.air.model = model;
+        w.settings.air.dragCoefficient = 0.5f;
+        w.settings.air.kesericaFactor = 0.1f;
+        w.settings.cloth.resolutionX = w.settings.cloth.resolutionY = 6;
+        ASSERT_EQ(w.rebuild(), "");
+        const Vec3 v0(1.f, -2.f, 0.5f);
+        for (Vec3& v : w.cloth.v)
+            v = v0;
+        const int N = 120;
+        for (int n = 0; n < N; ++n)
+            w.substep();
+        const double dt = double(w.settings.time.frameDt) / w.settings.time.substeps;
+        const double perStep = model == AirModel::Drag ? 1.0 - 0.5 / 0.2 * dt : 1.0 - 0.1;
+        const double factor = std::pow(perStep, N); // 0.607 and 3.2e-6
+        for (Index p = 0; p < w.cloth.particleCount(); ++p)
+            ASSERT_LT((w.cloth.v[p].cast<double>() - factor * v0.cast<double>()).norm(), 1e-5 * factor * v0.norm())
+                << (model == AirModel::Drag ? "drag" : "Keserica") << ", particle " << p;
+    }
 }
 
 // ========================================================================================= [MOMENTUM]
@@ -260,6 +374,50 @@ TEST(Physics, MomentumIsConservedWithProvotLimiting) {
     }
 }
 
+// Momentum above is measured from velocities, which a limit moving positions wrongly (say, one end
+// of each spring only) would not change. The positions: a free cloth at rest with every particle
+// displaced at random (springs stretched up to ~80%), nothing but the limit at work (no spring
+// forces, gravity or air), one sub-step. The limit pulls the springs back, moving particles by
+// centimetres, and since every correction is split by inverse mass (m_a dx_a = -m_b dx_b), the
+// centre of mass stays where it was, to round-off.
+TEST(Physics, ProvotLimitingAloneKeepsTheCentreOfMass) {
+    for (MeshType mesh : {MeshType::Grid, MeshType::Irregular}) {
+        const char* name = mesh == MeshType::Grid ? "grid" : "irregular";
+        World w;
+        w.settings = quietSettings();
+        w.settings.material.stretchStiffness = 0.f;
+        w.settings.material.bendStiffness = 0.f;
+        w.settings.limit.enabled = true;
+        w.settings.cloth.mesh = mesh;
+        w.settings.cloth.resolutionX = 14;
+        w.settings.cloth.resolutionY = 11;
+        ASSERT_EQ(w.rebuild(), "");
+        Rng rng(3);
+        const float spacing = 2.f / 13.f;
+        for (Vec3& x : w.cloth.x)
+            x += 0.25f * spacing * Vec3(float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)), float(rng.uniform(-1, 1)));
+        auto centre = [&] {
+            Vec3d c = Vec3d::Zero();
+            for (Index p = 0; p < w.cloth.particleCount(); ++p)
+                c += w.cloth.particleMass(p) * w.cloth.x[p].cast<double>();
+            return Vec3d(c / w.cloth.totalMass());
+        };
+        const Vec3d c0 = centre();
+        const std::vector<Vec3> x0 = w.cloth.x;
+        const double strain0 = maxStructuralStrain(w);
+        w.substep();
+        double moved = 0; // mass-weighted mean displacement
+        for (Index p = 0; p < w.cloth.particleCount(); ++p)
+            moved += w.cloth.particleMass(p) * double((w.cloth.x[p] - x0[p]).norm());
+        moved /= w.cloth.totalMass();
+        EXPECT_GT(strain0, 0.3) << name << ": the limit must have work to do";
+        EXPECT_LT(maxStructuralStrain(w), strain0 - 0.1) << name;
+        EXPECT_GT(moved, 1e-3) << name << ": the limit must move the particles";
+        EXPECT_LT((centre() - c0).norm(), 1e-3 * moved) << name << ": the limit moved the centre of mass";
+        RecordProperty(std::string("limit_mean_move_") + name, std::to_string(moved));
+    }
+}
+
 // =========================================================================================== [ENERGY]
 
 // A curtain with no damping of any kind, released with a smooth out-of-plane velocity. Returns the
@@ -316,13 +474,6 @@ TEST(Physics, SemiImplicitEulerKeepsEnergyBoundedWhereForwardEulerGrows) {
 }
 
 // ============================================================================================ [LIMIT]
-
-double maxStructuralStrain(const World& w) {
-    double worst = 0;
-    for (const Spring& s : w.cloth.springs)
-        worst = std::max(worst, double((w.cloth.x[s.b] - w.cloth.x[s.a]).norm()) / s.rest - 1.0);
-    return worst;
-}
 
 // A heavy, soft curtain whose springs alone would stretch far beyond the limit. After it settles
 // with many Jacobi passes, no structural spring is more than 1% past rest * (1 + max_stretch).

@@ -73,6 +73,40 @@ TEST(Sleep, RestingCurtainSleepsAndWakesWhenTouched) {
     EXPECT_FALSE(off.asleep);
 }
 
+// When it falls asleep: a free cloth drifting as one at a constant speed (no gravity, air, springs
+// at work, ground or pins) is at rest for sleep while it moves slower than sleep.speed over a frame,
+// and falls asleep at the end of the first frame that completes sleep.delay at rest, counted from
+// the end of the first frame at rest. With 1/64 s frames (exact in float and double) and a 0.5 s
+// delay: after frame 1 + 32 = 33. At twice sleep.speed it never sleeps.
+int framesUntilAsleep(float speedFactor) {
+    World w;
+    Settings& s = w.settings;
+    s.gravity = GravitySettings{0.f, 0.f, 0.f};
+    s.air.dragCoefficient = 0.f;
+    s.material.stretchStiffness = s.material.bendStiffness = 0.f;
+    s.collision.ground = false;
+    s.tear.enabled = false;
+    s.cloth.pin = PinMode::None;
+    s.cloth.resolutionX = s.cloth.resolutionY = 6;
+    s.time.frameDt = 1.f / 64.f;
+    s.time.substeps = 8;
+    s.sleep.delay = 0.5f;
+    EXPECT_EQ(w.rebuild(), "");
+    for (Vec3& v : w.cloth.v)
+        v = Vec3(speedFactor * s.sleep.speed, 0.f, 0.f);
+    for (int f = 1; f <= 200; ++f) {
+        w.step();
+        if (w.asleep)
+            return f;
+    }
+    return -1;
+}
+
+TEST(Sleep, FallsAsleepAfterTheDelayOnlyWhenSlowerThanTheSpeed) {
+    EXPECT_EQ(framesUntilAsleep(0.5f), 33);
+    EXPECT_EQ(framesUntilAsleep(2.f), -1) << "a cloth moving faster than sleep.speed must stay awake";
+}
+
 // The broad phase only skips triangles that cannot touch a ball: a ball thrown through a tearing
 // cloth gives the same state, to the bit, with it and without it (every triangle tested). A 0.2 m
 // ball on the 6 m cloth: the grown box holds about 11% of the particles, so the broad phase is the

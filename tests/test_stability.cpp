@@ -91,6 +91,58 @@ TEST(Stability, GuardPicksTheSubstepsTheEstimateNeeds) {
     EXPECT_EQ(w.guardSubsteps(), 10);
 }
 
+// The guard's cap on one spring, k (1/m_a + 1/m_b) dt^2 <= 1/3, seen in the period of an
+// oscillator: a triangle with A = (-1, 0) and B = (1, 0) pinned and C = (0, 1) free (no gravity,
+// air or damping), C displaced by 1 mm. C swings on the two springs AC and BC: u'' = -omega^2 u with
+// omega^2 = 2 k (h / L)^2 / m = k w with w = 1/m_C, (h / L)^2 = 1/2. Semi-implicit Euler swings at
+// the discrete cos(Omega dt) = 1 - (omega dt)^2 / 2, a period of 2 pi / Omega. At stretch stiffness
+// 1e5 N/m each spring asks for k w dt^2 = 0.75 (stable: the method needs omega dt < 2): without the
+// guard, a period of 7.0 sub-steps; with it, k w dt^2 = 1/3, (omega dt)^2 = 1/3, 10.7 sub-steps.
+double oscillatorPeriodInSteps(bool guard) {
+    World w;
+    Settings& s = w.settings;
+    s.gravity = GravitySettings{0.f, 0.f, 0.f};
+    s.air.dragCoefficient = 0.f;
+    s.material.stretchStiffness = 1e5f;
+    s.material.stretchDamping = 0.f;
+    s.limit.enabled = false;
+    s.tear.enabled = false;
+    s.collision.ground = false;
+    s.cloth.pin = PinMode::None;
+    s.time.frameDt = 0.01f;
+    s.time.substeps = 10; // dt = 1 ms
+    s.time.stabilityGuard = guard;
+    MeshData m;
+    m.positions = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    m.triangles = {{0, 1, 2}};
+    m.cornerUVs = {{Vec2d(0, 0), Vec2d(1, 0), Vec2d(0.5, 1)}};
+    EXPECT_EQ(w.rebuild(m), "");
+    w.cloth.setPinned(0, true);
+    w.cloth.setPinned(1, true);
+    w.cloth.x[2].y() += 1e-3f;
+    std::vector<double> crossings; // sub-steps at which u changes sign, linearly interpolated
+    double uPrev = 1e-3;
+    for (int n = 1; n <= 400; ++n) {
+        w.substep();
+        const double u = double(w.cloth.x[2].y()) - 1.0;
+        if ((uPrev > 0) != (u > 0))
+            crossings.push_back(n - 1 + uPrev / (uPrev - u));
+        uPrev = u;
+    }
+    EXPECT_TRUE(w.cloth.x[2].allFinite());
+    EXPECT_GE(crossings.size(), 20u);
+    return crossings.size() < 2 ? 0 : 2.0 * (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+}
+
+TEST(Stability, GuardCapsEachSpringAtAThirdOfItsStableStiffness) {
+    auto discretePeriod = [](double omegaDt2) { return 2.0 * M_PI / std::acos(1.0 - omegaDt2 / 2.0); };
+    // k w dt^2 of one spring as asked: S x weight (area 1 / L^2 = 1/2) x 3 / (rho h) x dt^2.
+    const double asked = 1e5 * 0.5 * 3.0 / (0.2 * 1.0) * 1e-6;
+    ASSERT_NEAR(asked, 0.75, 1e-12);
+    EXPECT_NEAR(oscillatorPeriodInSteps(false), discretePeriod(asked), 0.01 * discretePeriod(asked));
+    EXPECT_NEAR(oscillatorPeriodInSteps(true), discretePeriod(1.0 / 3.0), 0.01 * discretePeriod(1.0 / 3.0));
+}
+
 // =========================================================================================== [RANDOM]
 
 // Every parameter drawn uniformly from its safe range (the panel's default slider span), bools and

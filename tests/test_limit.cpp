@@ -1,0 +1,107 @@
+// The length limit (Provot 1995; Onal 2.1.1) on cases with a known answer: one over-relaxed pass
+// split by inverse mass, and the tethers that hold a deep curtain within the limit.
+//
+// Section index:
+//   [PASS]      one Jacobi pass on one over-long spring
+//   [TETHERS]   a curtain too deep for the passes alone
+#include "clothtear/mesh.h"
+#include "clothtear/scenes.h"
+#include "clothtear/world.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace clothtear;
+
+namespace {
+
+// ============================================================================================== [PASS]
+
+// A unit square of two triangles split along the diagonal from A = (0, 0), so A lies in both
+// triangles and B = (1, 0) in one: m_A = 2 m_B. Only the limit moves anything (no springs, gravity,
+// air or tearing), in one pass. B is moved to x = 1.15: AB has strain 0.15, past the limit of 0.1;
+// BC stretches by 1% and the diagonal not at all. The pass shortens AB by the excess times the
+// relaxation, r (1.15 - 1.1), and splits that by inverse mass: A moves 1/3 of it, B 2/3, so
+// m_A dA = m_B dB (the centre of mass stays). With A pinned, B moves the whole of it.
+struct PassResult {
+    float ax, bx; // m, x of A and B after the pass
+};
+
+PassResult onePass(float relaxation, bool pinA) {
+    World w;
+    Settings& s = w.settings;
+    s.gravity = GravitySettings{0.f, 0.f, 0.f};
+    s.air.dragCoefficient = 0.f;
+    s.material.stretchStiffness = 0.f;
+    s.material.stretchDamping = 0.f;
+    s.material.bendStiffness = 0.f;
+    s.material.bendDamping = 0.f;
+    s.tear.enabled = false;
+    s.collision.ground = false;
+    s.cloth.pin = PinMode::None;
+    s.limit.iterations = 1;
+    s.limit.relaxation = relaxation;
+    MeshData m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    for (const auto& t : m.triangles)
+        m.cornerUVs.push_back({m.positions[t[0]].head<2>(), m.positions[t[1]].head<2>(), m.positions[t[2]].head<2>()});
+    EXPECT_EQ(w.rebuild(m), "");
+    Index a = 0, b = 0;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+        if (w.cloth.rest[p] == Vec3d(0, 0, 0)) a = p;
+        if (w.cloth.rest[p] == Vec3d(1, 0, 0)) b = p;
+    }
+    EXPECT_NEAR(w.cloth.particleMass(a), 2.0 * w.cloth.particleMass(b), 1e-12);
+    if (pinA) w.cloth.setPinned(a, true);
+    w.cloth.x[b].x() = 1.15f;
+    w.substep();
+    EXPECT_EQ(w.cloth.x[a].y(), 0.f);
+    EXPECT_EQ(w.cloth.x[b].y(), 0.f);
+    return {w.cloth.x[a].x(), w.cloth.x[b].x()};
+}
+
+TEST(Limit, OnePassShortensBySplitOverRelaxedExcess) {
+    for (float r : {1.f, 1.5f}) {
+        const double shortening = r * (1.15 - 1.1);
+        const PassResult free = onePass(r, false);
+        EXPECT_NEAR(free.ax, shortening / 3.0, 1e-6) << "relaxation " << r << ": A moves by 1/3";
+        EXPECT_NEAR(free.bx, 1.15 - 2.0 * shortening / 3.0, 1e-6) << "relaxation " << r << ": B by 2/3";
+        const PassResult pinned = onePass(r, true);
+        EXPECT_EQ(pinned.ax, 0.f) << "a pinned end never moves";
+        EXPECT_NEAR(pinned.bx, 1.15 - shortening, 1e-6) << "relaxation " << r << ": B moves by all of it";
+    }
+}
+
+// =========================================================================================== [TETHERS]
+
+// A 2 m curtain 160 rows deep and 4 particles wide: far too deep for 12 Jacobi passes a sub-step to
+// carry the pins' hold down to its bottom (each pass carries a correction about one spring; its sag
+// index D^2 g dt^2 / (iterations h) is about 3, where 0.2 switches the tethers on, tethers.h).
+// The tethers keep every particle within (1 + max_stretch) x its path length of the top edge, so
+// the bottom hangs at most 2 m x 1.1 below the top, and the springs within the limit. Without them
+// (tethers never pulling) the bottom hung 2.67 m below the top, its springs at strain 0.8.
+TEST(Limit, TethersHoldADeepCurtainWithinTheLimit) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain",
+                        std::vector<std::string>{"cloth.resolution_x=4", "cloth.resolution_y=160", "cloth.width=0.1",
+                                                 "tear.enabled=false", "sleep.enabled=false"}),
+              "");
+    for (int f = 0; f < 90; ++f)
+        w.step();
+    ASSERT_TRUE(w.finite);
+    const double maxStretch = w.settings.limit.maxStretch;
+    float top = -1e30f, bottom = 1e30f;
+    for (const Vec3& x : w.cloth.x)
+        top = std::max(top, x.y()), bottom = std::min(bottom, x.y());
+    EXPECT_LT(top - bottom, 2.0 * (1.0 + maxStretch)) << "the bottom fell past what the springs allow";
+    // The passes count a spring within 0.2 % of its limit as done (at rest many sit there).
+    EXPECT_LT(w.maxStrain, (1.0 + maxStretch) * 1.003 - 1.0) << "max strain " << w.maxStrain;
+    EXPECT_GT(top - bottom, 2.0 * 1.05) << "the curtain must carry its weight on stretched springs";
+    RecordProperty("deep_curtain_max_strain", std::to_string(w.maxStrain));
+}
+
+} // namespace

@@ -1,0 +1,200 @@
+// Which spring tears, when, and how, on tiny hand-built meshes where the answer is known: the tear
+// threshold (Onal 3.2.1), the weak-point tear path across the tension (3.2.2, Fig. 3.14-3.15) and
+// the one-point split (3.2.3).
+//
+// Section index:
+//   [HELPERS]     meshes with UVs from rest positions, spring lookup, stretching
+//   [THRESHOLD]   a spring tears at the threshold, not below
+//   [WEAK]        the weak-point tear cuts the spoke across the tension
+//   [ONEPOINT]    a bow tie comes apart at its one shared particle
+#include "clothtear/cloth.h"
+#include "clothtear/mesh.h"
+#include "clothtear/tear.h"
+#include "clothtear/world.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace clothtear;
+
+namespace {
+
+// ========================================================================================== [HELPERS]
+
+MeshData meshOf(std::vector<Vec3d> positions, std::vector<std::array<Index, 3>> triangles) {
+    MeshData m;
+    m.positions = std::move(positions);
+    m.triangles = std::move(triangles);
+    for (const auto& t : m.triangles)
+        m.cornerUVs.push_back({m.positions[t[0]].head<2>(), m.positions[t[1]].head<2>(), m.positions[t[2]].head<2>()});
+    return m;
+}
+
+// The structural spring joining the particles at rest points ra and rb (kNone if none).
+Index springBetween(const Cloth& c, const Vec3d& ra, const Vec3d& rb) {
+    for (Index s = 0; s < c.springs.size(); ++s) {
+        const Vec3d& a = c.rest[c.springs[s].a];
+        const Vec3d& b = c.rest[c.springs[s].b];
+        if ((a == ra && b == rb) || (a == rb && b == ra)) return s;
+    }
+    return kNone;
+}
+
+// How many structural springs join a particle at rest point ra to one at rest point rb.
+int springsBetween(const Cloth& c, const Vec3d& ra, const Vec3d& rb) {
+    int n = 0;
+    for (const Spring& s : c.springs) {
+        const Vec3d& a = c.rest[s.a];
+        const Vec3d& b = c.rest[s.b];
+        n += (a == ra && b == rb) || (a == rb && b == ra);
+    }
+    return n;
+}
+
+// Stretches the cloth by 1 + e along unit direction d (through the origin): x = r + e (r . d) d.
+void stretchAlong(Cloth& c, const Vec3d& d, double e) {
+    for (Index p = 0; p < c.particleCount(); ++p) c.x[p] = (c.rest[p] + e * c.rest[p].dot(d) * d).cast<float>();
+}
+
+// ========================================================================================= [THRESHOLD]
+
+// A unit square of two triangles, every particle pinned, one corner moved along x so that the bottom
+// edge has strain e and no other structural spring is near a threshold (the right edge stretches by
+// less than e / 4). One sub-step: the strain scan finds the edge and the tear phase tears it if e
+// reaches tear.threshold, and not below (0.35 by default: 0.34 holds, 0.36 tears).
+uint64_t tearsAtStrain(double e, float threshold) {
+    World w;
+    w.settings.gravity = GravitySettings{0.f, 0.f, 0.f};
+    w.settings.collision.ground = false;
+    w.settings.cloth.pin = PinMode::None;
+    w.settings.tear.threshold = threshold;
+    EXPECT_EQ(w.rebuild(meshOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}})), "");
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) w.cloth.setPinned(p, true);
+    const Index bottom = springBetween(w.cloth, {0, 0, 0}, {1, 0, 0});
+    EXPECT_NE(bottom, kNone);
+    for (Index p = 0; p < w.cloth.particleCount(); ++p)
+        if (w.cloth.rest[p] == Vec3d(1, 0, 0)) w.cloth.x[p].x() = float(1.0 + e);
+    w.substep();
+    EXPECT_EQ(w.tearLog.total(), w.tearLog.counts[int(TearMode::Basic)]) << "an untorn square has no weak points";
+    return w.tearLog.total();
+}
+
+TEST(TearThreshold, SpringTearsAtTheThresholdNotBelow) {
+    EXPECT_EQ(tearsAtStrain(0.34, 0.35f), 0u);
+    EXPECT_EQ(tearsAtStrain(0.36, 0.35f), 1u);
+    EXPECT_EQ(tearsAtStrain(0.49, 0.5f), 0u);
+    EXPECT_EQ(tearsAtStrain(0.51, 0.5f), 1u);
+}
+
+// ============================================================================================== [WEAK]
+
+// An open fan around particle 0 at the origin: rim particles on the unit circle every 45 deg from
+// -90 to 270 deg, the first and the last at the same rest point (0, -1): the two walls of a slit
+// running down from the centre, which makes particle 0 a tear tip (kWeak).
+//
+//                 90
+//          135    |    45
+//             \   |   /
+//      180 ----- p0 ----- 0        the slit: p0 down to (0, -1), between the -90 and 270 spokes
+//             /   |   \ .
+//          225    ||   -45
+//              270  -90
+const double kS = std::sqrt(0.5);
+const Vec3d kRim[9] = {{0, -1, 0}, {kS, -kS, 0}, {1, 0, 0},  {kS, kS, 0}, {0, 1, 0},
+                       {-kS, kS, 0}, {-1, 0, 0}, {-kS, -kS, 0}, {0, -1, 0}};
+
+Cloth slitFan() {
+    std::vector<Vec3d> positions{{0, 0, 0}};
+    positions.insert(positions.end(), std::begin(kRim), std::end(kRim));
+    std::vector<std::array<Index, 3>> triangles;
+    for (Index k = 0; k < 8; ++k) triangles.push_back({0, 1 + k, 2 + k});
+    Result<Cloth> built = buildCloth(meshOf(positions, triangles), 0.2f);
+    EXPECT_TRUE(built.ok()) << built.error;
+    return built.value;
+}
+
+// Stretched by half along the tension axis d (the direction of rim spoke `tense`), the spoke along
+// d reaches strain 0.5 and tears at the weak point. Onal 3.2.2: the tension axis is d; the spoke
+// resisting most is the one opposite (strain 0.5, pointing along -d); the candidates are the spokes
+// between the two on the side away from the slit, and the tear takes the one closest to the axis
+// perpendicular to d. The cut spoke is the one whose rim particle then hangs on two copies of the
+// centre (the detached triangles take a copy of the spoke); every other rim particle on one.
+void expectWeakTearCuts(int tense, int across) {
+    Cloth c = slitFan();
+    ASSERT_TRUE(c.flags[0] & kWeak) << "the centre of a slit fan is a tear tip";
+    const Vec3d d = kRim[tense];
+    stretchAlong(c, d, 0.5);
+    const Vec3d centre(0, 0, 0);
+    const Index s = springBetween(c, centre, kRim[tense]);
+    ASSERT_NE(s, kNone);
+    TearSettings settings;
+    TearLog log;
+    const TearContext ctx{settings, 0.0, &log};
+    std::vector<TearCandidate> candidates{{s, float((c.x[c.springs[s].b] - c.x[c.springs[s].a]).norm() /
+                                                   c.springs[s].rest - 1.f)}};
+    EXPECT_NEAR(candidates[0].strain, 0.5f, 1e-5f);
+    ASSERT_EQ(tearSprings(c, candidates, ctx), 1);
+    EXPECT_EQ(log.counts[int(TearMode::WeakPoint)], 1u) << "the tear must go through the weak point";
+    EXPECT_EQ(validateCloth(c), "");
+    for (int k = 1; k < 8; ++k) {
+        const double angle = -90.0 + 45.0 * k;
+        EXPECT_EQ(springsBetween(c, centre, kRim[k]), k == across ? 2 : 1)
+            << "tension along the " << -90.0 + 45.0 * tense << " deg spoke: the spoke at " << angle
+            << " deg " << (k == across ? "must be cut (it lies across the tension)" : "must not be cut");
+    }
+}
+
+TEST(WeakPoint, TearCutsTheSpokeAcrossTheTension) {
+    expectWeakTearCuts(/*tense*/ 2, /*across*/ 4); // tension along 0 deg: the 90 deg spoke is cut
+    expectWeakTearCuts(/*tense*/ 3, /*across*/ 5); // tension along 45 deg: the 135 deg spoke is cut
+}
+
+// ========================================================================================== [ONEPOINT]
+
+// Two triangles sharing only particle 0 (a bow tie), pulled apart along x: particle 0 is a one-point
+// connection (kHinge). A spring at it strained past tear.one_point_threshold separates the two
+// triangles (the second fan gets a copy of particle 0); below it nothing happens. The copy holding
+// the tense spring is moved towards its other end by half the excess over 1 + threshold / 2, so
+// the spring does not tear again at once (Onal Fig. 3.19).
+TEST(OnePoint, BowTieSeparatesAtItsSharedParticle) {
+    for (double pull : {0.1, 0.3}) {
+        Result<Cloth> built = buildCloth(
+            meshOf({{0, 0, 0}, {1, -0.5, 0}, {1, 0.5, 0}, {-1, 0.5, 0}, {-1, -0.5, 0}}, {{0, 1, 2}, {0, 3, 4}}), 0.2f);
+        ASSERT_TRUE(built.ok()) << built.error;
+        Cloth c = built.value;
+        ASSERT_TRUE(c.flags[0] & kHinge);
+        for (Index p = 1; p < 5; ++p) c.x[p].x() += float(c.rest[p].x() > 0 ? pull : -pull);
+        const Index s = springBetween(c, {0, 0, 0}, {1, -0.5, 0});
+        ASSERT_NE(s, kNone);
+        const Spring sp = c.springs[s];
+        const float len = (c.x[sp.b] - c.x[sp.a]).norm(), strain = len / sp.rest - 1.f;
+        TearSettings settings;
+        TearLog log;
+        const TearContext ctx{settings, 0.0, &log};
+        std::vector<TearCandidate> candidates{{s, strain}};
+        const bool past = strain >= settings.onePointThreshold;
+        EXPECT_EQ(past, pull > 0.2) << "strain " << strain;
+        EXPECT_EQ(tearSprings(c, candidates, ctx), past ? 1 : 0) << "strain " << strain;
+        EXPECT_EQ(validateCloth(c), "");
+        if (!past) {
+            EXPECT_EQ(c.particleCount(), 5u);
+            continue;
+        }
+        EXPECT_EQ(log.counts[int(TearMode::OnePoint)], 1u);
+        ASSERT_EQ(c.particleCount(), 6u);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_NE(c.triangles[0].p[i], c.triangles[1].p[j]) << "the two triangles must share no particle";
+        for (Index p = 0; p < c.particleCount(); ++p) EXPECT_FALSE(c.flags[p] & kHinge) << "particle " << p;
+        const Index now = springBetween(c, {0, 0, 0}, {1, -0.5, 0});
+        ASSERT_NE(now, kNone);
+        const float after = (c.x[c.springs[now].b] - c.x[c.springs[now].a]).norm();
+        const float excess = len - sp.rest * (1.f + 0.5f * settings.onePointThreshold);
+        EXPECT_NEAR(after, len - 0.5f * excess, 1e-5f);
+    }
+}
+
+} // namespace
