@@ -1,5 +1,6 @@
 // clothtear_soak: the one-hour headless soak (src/cli/soak.h). Exit status 0 when every check held,
 // 1 on a non-finite value or a broken invariant, 2 on bad options.
+#include "run_options.h"
 #include "soak.h"
 
 #include <CLI/CLI.hpp>
@@ -15,15 +16,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.1, 1e6));
     app.add_option("--frames", o.maxFrames, "Stop after N frames instead")
         ->check(CLI::Range(0L, 1000000000L));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp&) {
-        std::cout << app.help();
-        return 0;
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "clothtear_soak: " << e.what() << " (see --help)\n";
-        return 2;
-    }
+    if (const int status = clothtear::parseCommandLine(app, argc, argv, "clothtear_soak"); status >= 0) return status;
     const clothtear::SoakResult r = clothtear::runSoak(o, std::cout);
     std::cout << "soak: " << r.frames << " frames, " << r.tears << " tears, " << r.rebuilds << " rebuilds, "
               << r.grabs << " grabs, " << r.impulses << " impulses, " << r.balls << " balls; RSS start "

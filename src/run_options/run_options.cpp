@@ -10,6 +10,19 @@
 
 namespace clothtear {
 
+int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        std::cout << app.help();
+        return 0;
+    } catch (const CLI::ParseError& e) {
+        std::cerr << program << ": " << e.what() << " (see --help)\n";
+        return 2;
+    }
+    return -1;
+}
+
 int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtension& extension) {
     CLI::App app{"clothtear: interactive cloth tearing (Onal 2013) and its headless runner"};
     app.add_flag("--headless", o.headless, "Run without a window and print/write a report");
@@ -24,15 +37,7 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");
     if (extension.add) extension.add(app);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp&) {
-        std::cout << app.help();
-        return 0;
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "clothtear: " << e.what() << " (see --help)\n";
-        return 2;
-    }
+    if (const int status = parseCommandLine(app, argc, argv, "clothtear"); status >= 0) return status;
     if (o.version) {
         std::cout << "clothtear " << CLOTHTEAR_VERSION << "\n";
         return 0;

@@ -40,6 +40,10 @@ struct RunOptionsExtension {
     std::function<std::string(const CLI::App&, const RunOptions&)> check;
 };
 
+// Parses argv with a configured CLI11 parser, the same way for every clothtear program: -1 to go on,
+// 0 after --help (printed on stdout), 2 on bad input ("<program>: <what> (see --help)" on stderr).
+int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program);
+
 // Parses argv into `options` (and the extension's own variables). Returns -1 to go on, or an exit
 // status: 0 after --help, --version, --list-scenes or --list-params (answered on stdout), 2 on bad
 // input (one line on stderr).
