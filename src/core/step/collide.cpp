@@ -73,7 +73,7 @@ void integrateBall(Ball& ball, const CollisionSettings& s, const Vec3& gravity, 
 // One contact between a ball and the point q = sum b_i x_i of a triangle; n points from the ball
 // centre to where the cloth must be, pen is how far q must move along n.
 void resolveContact(Cloth& cloth, const Triangle& tri, const Vec3& bary, Ball& ball, const Vec3& n, float pen,
-                    float friction, float dt) {
+                    float friction) {
     float w[3], wsum = 0.f;
     for (int i = 0; i < 3; ++i) {
         w[i] = cloth.invMass[tri.p[i]] * bary[i];
@@ -248,7 +248,7 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
             if (through != (pass == 0)) return;
             Touch t;
             if (!touch(ball.x, R, a, b, c, nt, side, t) || t.pen <= kContactSlop * R) return;
-            resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction, dt);
+            resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction);
             for (Index p : tri.p) {
                 PackedParticle& q = packed[p];
                 for (int k = 0; k < 3; ++k) q.x[k] = cloth.x[p][k], q.v[k] = cloth.v[p][k];
@@ -293,7 +293,7 @@ void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, 
             if (contact)
                 for (int k = 0; k < 3; ++k) held |= (cloth.x[tri.p[k]] - contact->at[k]).squaredNorm() > moveTol2;
             if (!held || ball.mass <= 0.f) {
-                resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction, dt);
+                resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction);
                 return;
             }
             // Moved back by pen, the ball loses pen / dt of its approach (position-based: the
@@ -307,7 +307,7 @@ void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, 
     if (s.ground && ball.x.y() - ball.radius < s.groundHeight) ball.x.y() = s.groundHeight + ball.radius;
 }
 
-void collideGround(Cloth& cloth, const CollisionSettings& s, float dt) {
+void collideGround(Cloth& cloth, const CollisionSettings& s) {
     const float floorY = s.groundHeight + s.thickness;
     const size_t n = cloth.particleCount();
     parallelRegion(n, n >= 2048 ? maxThreads() : 1, [&](int t, int nt) {
@@ -316,7 +316,6 @@ void collideGround(Cloth& cloth, const CollisionSettings& s, float dt) {
             Vec3& x = cloth.x[p];
             if (x.y() >= floorY || cloth.invMass[p] == 0.f) continue;
             Vec3& v = cloth.v[p];
-            const float dy = floorY - x.y();
             x.y() = floorY;
             Vec3 dv = Vec3::Zero();
             if (v.y() < 0.f) {
@@ -357,7 +356,7 @@ void settleContacts(Cloth& cloth, std::vector<Ball>& balls, const CollisionSetti
         settleBall(cloth, balls[i], s, dt, maxEdge, inside, contacts, contactOf.data());
         for (const BallContact& c : contacts) contactOf[c.triangle] = -1;
     }
-    if (s.ground) collideGround(cloth, s, dt);
+    if (s.ground) collideGround(cloth, s);
 }
 
 } // namespace clothtear
