@@ -10,6 +10,7 @@
 // bandwidth bound), holds (issue 12: does the cloth hold at every size, resolution, pin and load;
 // holds.cpp), all (every mode but stress and holds).
 #include "common.h"
+#include "run_options.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -90,15 +91,7 @@ int main(int argc, char** argv) {
     app.add_option("--tables", o.holdsTables, "Holds mode: grid, loaded, sag (comma separated) or all");
     app.add_option("--set", o.sets, "Holds mode: KEY=VALUE for every run (repeatable), e.g. limit.solver=xpbd");
     app.add_option("--tag", o.tag, "Holds mode: CSV name suffix (holds_TAG.csv)");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp&) {
-        std::cout << app.help();
-        return 0;
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "clothbench: " << e.what() << " (see --help)\n";
-        return 2;
-    }
+    if (const int status = clothtear::parseCommandLine(app, argc, argv, "clothbench"); status >= 0) return status;
     for (int i = 0; i < argc; ++i)
         o.commandLine += std::string(i ? " " : "") + argv[i];
     std::error_code ec;
