@@ -62,6 +62,9 @@ World settledCurtain(const CurtainOptions& o) {
         const int frames = int(std::lround(o.settleSeconds / w.settings.time.frameDt));
         for (int f = 0; f < frames; ++f) w.step();
         if (!w.finite) throw std::runtime_error("curtain " + r + " blew up while settling: " + w.nonFiniteWhere);
+        // World::substep() then takes the sub-step World::step() takes at this resolution (the
+        // stability guard's count for the material's stable step), not 1/600 s with capped springs.
+        w.settings.time.substeps = std::max(w.settings.time.substeps, w.frameSubsteps);
         it = cache.emplace(key, std::move(w)).first;
     }
     World w = it->second;

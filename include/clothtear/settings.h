@@ -14,6 +14,10 @@ namespace clothtear {
 enum class Integrator : int32_t { SemiImplicitEuler = 0, ForwardEuler = 1, Verlet = 2, ImplicitEuler = 3, Xpbd = 4 };
 inline bool isExplicit(Integrator i) { return i == Integrator::SemiImplicitEuler || i == Integrator::ForwardEuler || i == Integrator::Verlet; }
 enum class AirModel : int32_t { Drag = 0, Keserica = 1 };
+// How the length limit's passes apply their corrections (src/core/step/limit.cpp):
+//   GaussSeidel  in place, spring after spring, in one canonical order (any thread count: the same result)
+//   Jacobi       averaged and over-relaxed, each spring's share divided by its ends' correction counts
+enum class LimitSolver : int32_t { GaussSeidel = 0, Jacobi = 1 };
 enum class MeshType : int32_t { Grid = 0, Irregular = 1, Obj = 2 };
 enum class PinMode : int32_t { None = 0, TopEdge = 1, TopCorners = 2, LeftRightEdges = 3, LeftEdge = 4 };
 
@@ -23,9 +27,10 @@ struct TimeSettings {
     Integrator integrator = Integrator::SemiImplicitEuler;
     float verletFriction = 0.01f; // fraction of velocity lost per Verlet step (Keserica 2.2.1 "f")
     bool stabilityGuard = true;   // raise sub-steps up to maxSubsteps for the stable step, then cap each spring
-    int32_t maxSubsteps = 10;     // count   most sub-steps per frame the guard may use (default:
-                                  // time.substeps, so it only caps springs and keeps the frame budget; see
-                                  // bench/README.md "Stability" for what raising it costs and buys)
+    int32_t maxSubsteps = 200;    // count   most sub-steps per frame the guard may use: the material
+                                  // keeps the stiffness the user set (a finer or smaller cloth takes more
+                                  // sub-steps) up to this budget, past it springs are capped; at or below
+                                  // time.substeps it only caps (bench/README.md "Does the cloth hold?")
     float cgTolerance = 1e-5f;    // relative residual  implicit Euler: conjugate-gradient stop
     int32_t cgMaxIterations = 200; // count   implicit Euler: conjugate-gradient iteration cap
 };
@@ -53,6 +58,7 @@ struct LimitSettings {
     float maxStretch = 0.10f;  // ratio   springs longer than rest*(1+maxStretch) are pulled back
     int32_t iterations = 12;   // count   Jacobi passes per sub-step
     float relaxation = 1.5f;   // factor  over-relaxation of the averaged Jacobi correction
+    LimitSolver solver = LimitSolver::GaussSeidel;
 };
 
 struct WindSettings {

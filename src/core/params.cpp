@@ -13,6 +13,7 @@ namespace {
 const char* const kIntegratorNames[] = {"semi-implicit-euler", "forward-euler", "verlet", "implicit-euler", "xpbd",
                                           nullptr};
 const char* const kAirNames[] = {"drag", "keserica", nullptr};
+const char* const kLimitSolverNames[] = {"gauss-seidel", "jacobi", nullptr};
 const char* const kMeshNames[] = {"grid", "irregular", "obj", nullptr};
 const char* const kPinNames[] = {"none", "top", "corners", "sides", "left", nullptr};
 
@@ -30,7 +31,7 @@ const ParamInfo kParams[] = {
     CT_I("time.substeps", time.substeps, 1, 200, 1, 2000, "", "Sub-steps per frame (sub-step dt = frame_dt / substeps)", false),
     CT_E("time.integrator", time.integrator, kIntegratorNames, "Integration method (implicit-euler, xpbd: references, stable at any step, no stability guard)", false),
     CT_B("time.stability_guard", time.stabilityGuard, "Explicit integrators: raise the sub-steps (up to time.max_substeps) to the stable step estimated from the stiffest spring on the lightest particle, and cap each spring still too stiff (off: unsafe on purpose)", false),
-    CT_I("time.max_substeps", time.maxSubsteps, 1, 200, 1, 2000, "", "Stability guard: most sub-steps per frame it may take (at most time.substeps: it only caps springs)", false),
+    CT_I("time.max_substeps", time.maxSubsteps, 1, 400, 1, 2000, "", "Stability guard: most sub-steps per frame it may take for the material's stable step (beyond it, springs are capped; at most time.substeps: it only caps)", false),
     CT_F("time.cg_tolerance", time.cgTolerance, 1e-8, 1e-2, 1e-10, 0.1, "", "Implicit Euler: relative residual at which the conjugate-gradient solve stops", false),
     CT_I("time.cg_max_iterations", time.cgMaxIterations, 10, 1000, 1, 100000, "", "Implicit Euler: most conjugate-gradient iterations per sub-step", false),
     CT_F("time.verlet_friction", time.verletFriction, 0, 0.2, 0, 1, "", "Verlet: fraction of velocity lost per step (Keserica f)", false),
@@ -51,8 +52,9 @@ const ParamInfo kParams[] = {
 
     CT_B("limit.enabled", limit.enabled, "Provot length limiting after each sub-step", false),
     CT_F("limit.max_stretch", limit.maxStretch, 0.01, 0.5, 0.001, 10, "", "Springs longer than rest*(1+value) are pulled back", false),
-    CT_I("limit.iterations", limit.iterations, 0, 50, 0, 1000, "", "Jacobi passes of the length limit per sub-step", false),
-    CT_F("limit.relaxation", limit.relaxation, 0.5, 1.8, 0.1, 2, "", "Over-relaxation of the averaged correction", false),
+    CT_I("limit.iterations", limit.iterations, 0, 50, 0, 1000, "", "Most passes of the length limit per sub-step; gauss-seidel may take up to 4 x the cloth's depth in springs (passes stop when nothing is over the limit)", false),
+    CT_F("limit.relaxation", limit.relaxation, 0.5, 1.8, 0.1, 2, "", "Over-relaxation of the limit's correction", false),
+    CT_E("limit.solver", limit.solver, kLimitSolverNames, "How the limit's passes correct: gauss-seidel (in place, spring after spring: converges in far fewer passes) or jacobi (averaged)", false),
 
     CT_B("wind.enabled", wind.enabled, "Wind force on triangles", false),
     CT_F("wind.dir_x", wind.dirX, -1, 1, -1, 1, "", "Wind direction, x", false),

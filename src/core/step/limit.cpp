@@ -1,4 +1,4 @@
-// The limit phase: strain scan, tethers and Provot length limiting (averaged Jacobi).
+// The limit phase: strain scan, tethers and Provot length limiting (Gauss-Seidel or averaged Jacobi).
 //
 // Provot length limiting (Onal 2.1.1): a spring longer than rest * (1 + maxStretch) pulls its ends
 // together, split by inverse mass; pinned ends never move. Corrections are Jacobi (each spring's
@@ -14,15 +14,18 @@
 //   1. scan     reads every structural spring once (four at a time, kernels.h); most leave after one
 //               squared-length compare, no square root. Lists the candidates and the springs over
 //               the limit.
-//   2. tethers  on cloths the passes alone cannot hold (tethers.h: sag index), pull every particle
-//               back within reach of its anchor. A tether whose path runs through a tear candidate
-//               (or a ball contact) does not pull this sub-step; the scan comes first so that a
-//               spring reaching its threshold is seen before anything pulls it back.
-//   3. passes   Jacobi passes over the listed springs only: a pass drops the springs back within
-//               the limit (to kLimitTolerance) and lists the springs of the particles it moved that
-//               it pushed over (particle-spring table), so a pass covers what a full pass would
-//               correct; they stop when a pass corrects nothing. At rest that is a few hundred
-//               springs, not all of them, per sub-step.
+//   2. tethers  (tethers.h) pull every particle back within reach of its anchor. A tether whose
+//               path runs through a tear candidate (or a ball contact) does not pull this sub-step;
+//               the scan comes first so that a spring reaching its threshold is seen before anything
+//               pulls it back. The springs of the particles a tether moved are listed if it pushed
+//               them over the limit (a pull sideways, towards another anchor, can).
+//   3. passes   over the listed springs only (limit.solver): Gauss-Seidel, in place and in one
+//               canonical order, forwards and backwards in turn, by one thread (the result does not
+//               depend on the thread count); or averaged Jacobi over the threads. A pass drops the
+//               springs back within the limit (to kLimitTolerance) and lists the springs of the
+//               particles it moved that it pushed over (particle-spring table), so a pass covers
+//               what a full pass would correct; they stop when a pass corrects nothing (passCap:
+//               at most). At rest that is a few hundred springs, not all of them, per sub-step.
 #include "kernels.h"
 #include "limit_kernels.h"
 #include "parallel.h"
@@ -30,6 +33,7 @@
 #include "tethers.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace clothtear {
@@ -51,6 +55,21 @@ void refreshLimitCache(const StepContext& ctx, const Cloth& cloth, LimitCache& C
             if (p < anchor.size()) anchor[p] = 0;
     buildLimitCache(cloth, anchor, C);
     C.stamp.set(ctx.revisions);
+}
+
+// Gauss-Seidel: a pass carries a correction along the whole list in the list's direction, but
+// only one spring against it, so a pull from the anchors across a cloth D springs deep can take
+// on the order of D passes; the passes may run to kPassesPerDepth x D (limit.iterations at least)
+// and stop as soon as nothing is over the limit. Measured (bench/README.md, "Does the cloth
+// hold?"): a 2 m cloth pinned on its left edge needs about 100 passes at 33 x 33 and 200 at 65 x 65
+// while it swings. Without anchors, D is the side of a square of the cloth's particles. Jacobi:
+// limit.iterations, as set.
+constexpr int kPassesPerDepth = 4;
+int passCap(const StepContext& ctx, const Cloth& cloth, const LimitCache& C) {
+    const LimitSettings& L = ctx.settings->limit;
+    if (L.solver != LimitSolver::GaussSeidel || L.iterations <= 0) return L.iterations;
+    const uint32_t depth = C.depth > 0 ? C.depth : uint32_t(std::sqrt(double(cloth.particleCount())));
+    return std::max(L.iterations, kPassesPerDepth * int(depth));
 }
 
 // One sub-step's limit phase: what the parts share, and the parts as named functions. run() calls
@@ -88,6 +107,10 @@ private:
     // `nc` count buffers).
     int countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched);
     void correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, int nc);
+    // A Gauss-Seidel pass: each listed spring over the limit is corrected in place, in list order
+    // or backwards (symmetric Gauss-Seidel: a pull travels the whole list in one pass either way);
+    // the particles it moves go on `moved` (stamped).
+    int gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32_t stamp, std::vector<Index>& moved);
     // Lists the springs of the particles in `moved` that a pass pushed over the limit. A spring
     // whose two ends both moved is listed from its lower-numbered end only.
     void expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list);
@@ -101,6 +124,7 @@ private:
     const int iterations_;
     const float doneRatio_, heldDoneRatio_, minTearRatio_, minSplitRest_;
     const bool useTethers_;
+    const bool gaussSeidel_;
     const uint32_t stamp0_;
     Vec3* x_;
     Vec3* v_;
@@ -117,16 +141,16 @@ private:
 LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
     : ctx_(ctx), cloth_(cloth), state_(state), C_(state.limit), T_(state.threads),
       P_{ctx.settings->limit.relaxation, ctx.dt, ctx.velocityFix},
-      iterations_(ctx.settings->limit.iterations), doneRatio_(ctx.maxRatio * (1.f + kLimitTolerance)),
+      iterations_(passCap(ctx, cloth, state.limit)), doneRatio_(ctx.maxRatio * (1.f + kLimitTolerance)),
       heldDoneRatio_(ctx.heldRatio * (1.f + kLimitTolerance)), minTearRatio_(std::min(ctx.tearRatio, ctx.weakRatio)),
       minSplitRest_(cloth.minSplitRest),
-      useTethers_(ctx.limiting && sagIndex(state.limit.depth, ctx.gravity.norm(), ctx.dt, iterations_,
-                                           state.limit.meanRest) > kTetherSagIndex),
+      useTethers_(ctx.limiting),
+      gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
       movedIn_(ctx.limiting ? state.limit.moved.data() : nullptr) {
-    if (ctx.limiting) C_.passStamp += uint32_t(iterations_);
+    if (ctx.limiting) C_.passStamp += uint32_t(iterations_) + 1; // the passes', then the tethers' stamp
 }
 
 // Every structural spring once, most of them with one compare and no square root: tear candidates
@@ -186,6 +210,19 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     tetherKernel(pc.begin, pc.end, C_.tether.data(), C_.length.data(), cut, ctx_.maxRatio * (1.f - kTetherSlack),
                  ctx_.dt, ctx_.velocityFix, state_.packed.data(), x_, v_);
+    // A tether's pull can stretch the particle's other springs past the limit (sideways, towards
+    // another anchor): the passes must see them. The scan read the positions before the pull.
+    const PackedParticle* packed = state_.packed.data();
+    std::vector<Index>& moved = T_.moved[t];
+    moved.clear();
+    const uint32_t stamp = stamp0_ + uint32_t(iterations_) + 1;
+    for (size_t p = pc.begin; p < pc.end; ++p)
+        if (x_[p].x() != packed[p].x[0] || x_[p].y() != packed[p].x[1] || x_[p].z() != packed[p].x[2]) {
+            movedIn_[p] = stamp;
+            moved.push_back(Index(p));
+        }
+    parallelBarrier(nt); // stamps complete (expand reads the other end's)
+    expand(moved, stamp, T_.active[t]);
 }
 
 int LimitSolve::countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched) {
@@ -223,6 +260,37 @@ void LimitSolve::correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, 
     }
 }
 
+int LimitSolve::gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32_t stamp, std::vector<Index>& moved) {
+    int corrected = 0;
+    const size_t count = list.size();
+    for (size_t j = 0; j < count; ++j) {
+        const Index i = list[backwards ? count - 1 - j : j];
+        const Spring& s = springs_[i];
+        const Vec3 d = x_[s.b] - x_[s.a];
+        const float len2 = d.squaredNorm();
+        if (!overLimit(s, len2)) {
+            listed_[i] = 0;
+            continue;
+        }
+        const float wa = invMass_[s.a], wb = invMass_[s.b];
+        if (wa + wb == 0.f || exempt(s, len2)) continue;
+        const float maxLen = s.rest * (underBall(s) ? ctx_.heldRatio : ctx_.maxRatio);
+        const LimitMove m = limitMove(s, d, len2, maxLen, 1.f, invMass_, v_, P_);
+        x_[s.a] += wa * m.c;
+        v_[s.a] += wa * m.dv;
+        x_[s.b] -= wb * m.c;
+        v_[s.b] -= wb * m.dv;
+        ++corrected;
+        for (Index p : {s.a, s.b})
+            if (invMass_[p] > 0.f && movedIn_[p] != stamp) {
+                movedIn_[p] = stamp;
+                moved.push_back(p);
+            }
+    }
+    list.erase(std::remove_if(list.begin(), list.end(), [&](Index i) { return listed_[i] == 0; }), list.end());
+    return corrected;
+}
+
 void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list) {
     for (Index p : moved)
         for (uint32_t k = C_.springStart[p]; k < C_.springStart[p + 1]; ++k) {
@@ -247,6 +315,15 @@ void LimitSolve::passes(int t, int nt) {
     auto& moved = T_.moved;
     std::vector<Index>& list = active[t];
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
+    if (gaussSeidel_ && nt > 1) {
+        // One list in scan order: the passes then do the same thing at any thread count.
+        parallelBarrier(nt);
+        if (t == 0)
+            for (int k = 1; k < nt; ++k) {
+                active[0].insert(active[0].end(), active[k].begin(), active[k].end());
+                active[k].clear();
+            }
+    }
     for (int pass = 0; pass < iterations_; ++pass) {
         const uint32_t stamp = stamp0_ + uint32_t(pass) + 1;
         listSize_[t] = list.size();
@@ -254,7 +331,15 @@ void LimitSolve::passes(int t, int nt) {
         size_t total = 0;
         for (int k = 0; k < nt; ++k) total += listSize_[k];
         if (total == 0) break;
-        if (total < kSerialList || nt == 1) {
+        if (gaussSeidel_) {
+            // Gauss-Seidel: thread 0, in place (its corrections read the ones before them).
+            if (t == 0) {
+                moved[0].clear();
+                work_[0] = gaussSeidelPass(active[0], pass % 2 == 1, stamp, moved[0]);
+                expand(moved[0], stamp, active[0]);
+                for (int k = 1; k < nt; ++k) work_[k] = 0;
+            }
+        } else if (total < kSerialList || nt == 1) {
             // Thread 0 works every list, in thread order, into its own buffer.
             if (t == 0) {
                 int corrected = 0;

@@ -50,33 +50,41 @@ inline bool countCorrection(const Spring& s, const float* invMass, Corr* corr, s
     return true;
 }
 
-// Provot correction of spring s (longer than maxLen), split by inverse mass, over-relaxed and
-// divided by `share` (the larger count of corrections its two ends get this pass), into `corr`.
-// Both ends get the same fraction of one correction pair, so the pass conserves momentum, as
-// Provot's pairwise correction does (dividing each particle's sum by its own count would not).
-// With the velocity fix, `corrV` gets an inelastic velocity change, again as an equal and opposite
-// pair: the ends' separating speed along the spring is cancelled, up to correction / dt, never
-// reversed. (Turning the whole correction into velocity, v += delta / dt, would inject energy when
-// a long overstretched spring is pulled back and set off tear cascades.)
-inline void addCorrection(const Spring& s, const Vec3& d, float len2, float maxLen, float share, const float* invMass,
-                          const Vec3* v, const CorrectionParams& P, Corr* corr, Corr* corrV) {
+// The Provot correction of spring s (longer than maxLen), split by inverse mass, over-relaxed and
+// divided by `share`: end a moves by wa c and end b by -wb c; with the velocity fix, end a's
+// velocity changes by wa dv and end b's by -wb dv (an inelastic pair: the ends' separating speed
+// along the spring is cancelled, up to correction / dt, never reversed; turning the whole
+// correction into velocity, v += delta / dt, would inject energy when a long overstretched spring
+// is pulled back and set off tear cascades). Verlet (no velocity fix): v is the position change
+// over dt, so the move is a velocity change.
+struct LimitMove {
+    Vec3 c, dv;
+};
+inline LimitMove limitMove(const Spring& s, const Vec3& d, float len2, float maxLen, float share, const float* invMass,
+                           const Vec3* v, const CorrectionParams& P) {
     const float wa = invMass[s.a], wb = invMass[s.b];
     const float len = std::sqrt(len2);
     const float excess = (len - maxLen) * P.relaxation / share;
     const Vec3 n = d / len;
     const Vec3 c = n * (excess / (wa + wb));
-    corr[s.a].head<3>() += wa * c;
-    corr[s.b].head<3>() -= wb * c;
-    if (!P.velocityFix) { // Verlet: v is the position change over dt, so the move is a velocity change
-        corrV[s.a].head<3>() += (wa / P.dt) * c;
-        corrV[s.b].head<3>() -= (wb / P.dt) * c;
-        return;
-    }
+    if (!P.velocityFix) return {c, c / P.dt};
     const float separating = (v[s.b] - v[s.a]).dot(n);
-    if (!(separating > 0.f)) return;
-    const Vec3 dv = n * (std::min(separating, excess / P.dt) / (wa + wb));
-    corrV[s.a].head<3>() += wa * dv;
-    corrV[s.b].head<3>() -= wb * dv;
+    if (!(separating > 0.f)) return {c, Vec3::Zero()};
+    return {c, n * (std::min(separating, excess / P.dt) / (wa + wb))};
+}
+
+// A Jacobi pass's share of spring s's correction (limitMove), into `corr` and `corrV`, divided by
+// `share` (the larger count of corrections its two ends get this pass). Both ends get the same
+// fraction of one correction pair, so the pass conserves momentum, as Provot's pairwise correction
+// does (dividing each particle's sum by its own count would not).
+inline void addCorrection(const Spring& s, const Vec3& d, float len2, float maxLen, float share, const float* invMass,
+                          const Vec3* v, const CorrectionParams& P, Corr* corr, Corr* corrV) {
+    const float wa = invMass[s.a], wb = invMass[s.b];
+    const LimitMove m = limitMove(s, d, len2, maxLen, share, invMass, v, P);
+    corr[s.a].head<3>() += wa * m.c;
+    corr[s.b].head<3>() -= wb * m.c;
+    corrV[s.a].head<3>() += wa * m.dv;
+    corrV[s.b].head<3>() -= wb * m.dv;
 }
 
 // Applies the corrections of the particles on the `touched` lists of threads [0, nt) that `mine`

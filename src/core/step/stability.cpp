@@ -11,6 +11,7 @@
 // stability map (bench/README.md) shows how far it is off for that method.
 #include "clothtear/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -32,24 +33,43 @@ void springSumsPerParticle(const Cloth& cloth, const MaterialSettings& m, std::v
     add(cloth.bends, m.bendStiffness, m.bendDamping);
 }
 
-double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
+double stableStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     const size_t n = cloth.particleCount();
     std::vector<double> k, kd;
     springSumsPerParticle(cloth, settings.material, k, kd);
-    double best = std::numeric_limits<double>::infinity();
+    std::vector<std::pair<double, double>> stepAndMass; // per free particle with springs
+    stepAndMass.reserve(n);
+    double freeMass = 0;
     for (Index p = 0; p < n; ++p) {
         const double w = cloth.invMass[p];
         if (w == 0.0)
             continue;
         const double A = k[p] * w, B = kd[p] * w;
+        double step = std::numeric_limits<double>::infinity();
         if (A > 0)
-            best = std::min(best, (std::sqrt(B * B + 2 * A) - B) / A);
+            step = (std::sqrt(B * B + 2 * A) - B) / A;
         else if (B > 0)
-            best = std::min(best, 1.0 / B);
+            step = 1.0 / B;
+        stepAndMass.emplace_back(step, 1.0 / w);
+        freeMass += 1.0 / w;
     }
-    return best;
+    if (stepAndMass.empty())
+        return std::numeric_limits<double>::infinity();
+    auto lightest = std::min_element(stepAndMass.begin(), stepAndMass.end());
+    if (!(lightMassFraction > 0))
+        return lightest->first;
+    // The step every particle meets but the ones that need a shorter one and together hold at most
+    // lightMassFraction of the mass.
+    std::sort(stepAndMass.begin(), stepAndMass.end());
+    double below = 0;
+    for (const auto& [step, mass] : stepAndMass) {
+        below += mass;
+        if (below > lightMassFraction * freeMass)
+            return step;
+    }
+    return stepAndMass.back().first;
 }
 
 } // namespace clothtear

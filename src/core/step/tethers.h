@@ -7,15 +7,11 @@
 // curtain held by a dozen passes per sub-step sags far past the limit (strain 0.4-0.6 at rest,
 // past the tear threshold). A tether carries the anchor's position to every particle in one pass.
 //
-// Only where the Jacobi passes alone cannot hold the cloth. Gravity moves every particle g dt^2
-// per sub-step and the passes carry a correction about one spring per pass, so how far the cloth
-// sags past the limit grows with the sag index  D^2 g dt^2 / (iterations h)  (D: springs from the
-// anchors to the farthest particle, h: mean spring rest length). Measured with 12 passes and
-// 10 sub-steps of 1/600 s, the 2 m curtain hangs at strain 0.12 at 64x64 (index 0.29), 0.16 at
-// 128x128 (2.3) and 0.37 at 256x256 (19), past the tear threshold; the tearing scenes' 6 m cloth
-// at 48x48 has index 0.04 and hangs within the limit. Above kTetherSagIndex the tethers are on;
-// below, the cloth behaves as the tearing scenes were tuned (tethers also make a cloth stiffer
-// against impacts than the unconverged passes do).
+// Always on with the limit (issue 12). They were on only where a sag index said the passes alone
+// could not hold the cloth; measured with the full-stiffness springs and the Gauss-Seidel limit
+// (bench/README.md, "Does the cloth hold?"), without them a 2 m cloth pinned at its corners or
+// its left edge hung at strain 0.11-0.15 and a 6 m one at up to 0.29 (limit 0.10), with them
+// every grid case but the 6 m cloth pinned left settles at the limit.
 //
 // A tether is implied by the spring limits (a path of springs each at most (1 + s) rest long spans
 // at most (1 + s) times the path's rest length), so it never pulls a cloth whose springs are all
@@ -28,14 +24,6 @@
 #include <vector>
 
 namespace clothtear {
-
-inline constexpr float kTetherSagIndex = 0.2f;
-
-// The sag index of a cloth D springs deep (see above).
-inline float sagIndex(uint32_t depth, float gravity, float dt, int iterations, float meanRest) {
-    if (iterations <= 0 || !(meanRest > 0.f)) return 0.f;
-    return float(depth) * float(depth) * gravity * dt * dt / (float(iterations) * meanRest);
-}
 
 // Rebuilds the tethers and the particle-to-spring table of `cache` for `cloth`: anchors are the
 // particles with anchor[p] != 0 (pinned and not moved by a driver). Particles that no anchor
