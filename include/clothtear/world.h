@@ -70,11 +70,16 @@ private:
 // The stability guard's estimate of the largest stable sub-step of explicit integration for the
 // material as set (before any spring is capped), s: Gershgorin's bound over each particle's
 // springs, so the stiffest springs on the lightest particle decide it (src/core/step/stability.cpp).
-// Infinite for the reference integrators. With lightMassFraction > 0: the step met by every
-// particle except the ones that need a shorter one and together hold at most that fraction of the
-// cloth's mass (the guard's choice: a tear's light midpoint particles get capped springs, not
-// the whole cloth more sub-steps).
-double stableStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction = 0);
+// Infinite for the reference integrators.
+double stableStepEstimate(const Cloth& cloth, const Settings& settings);
+
+// The sub-step the stability guard asks for (World::step): no longer than stableStepEstimate and
+// short enough that no spring needs the guard's per-spring cap, for every particle except those
+// that need a shorter step and together hold at most lightMassFraction of the cloth's mass (a
+// tear's light midpoint particles get capped springs instead of the whole cloth more sub-steps).
+double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction);
+// The fraction World::step passes: the lightest 1% of the mass may get capped springs.
+inline constexpr double kGuardLightMass = 0.01;
 
 // Per particle, the summed stiffness k (N/m) and damping kd (N s/m) of the structural and
 // bend-shear springs touching it, as the material asks for them (before the guard caps any): the

@@ -3,6 +3,7 @@
 #include "kernels.h"
 #include "parallel.h"
 #include "phases.h"
+#include "spring_caps.h"
 
 #include <algorithm>
 
@@ -80,7 +81,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     S.index.resize(ns + nb);
     for (auto* a : {&S.rest, &S.k, &S.kd}) a->resize(ns + nb);
     S.structural = ns;
-    const float kCap = 1.f / (3.f * dt * dt), kdCap = 1.f / (6.f * dt);
+    const float kCap = kStiffnessCap / (dt * dt), kdCap = kDampingCap / dt;
     auto fill = [&](const std::vector<Spring>& springs, size_t count, size_t offset, float ks, float kds) {
         constexpr size_t kBlock = 64, kWays = 8, kLane = kBlock / kWays;
         for (size_t e = 0; e < count; ++e) {

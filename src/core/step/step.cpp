@@ -120,9 +120,7 @@ void World::step() {
 // triangles, and a torn cloth's small midpoint particles would otherwise multiply the sub-steps
 // of the whole cloth (a 2 m cloth at 65 x 65 went from 20 to 200 per frame after 11 tears); their
 // springs are capped instead, and the limit holds their length.
-namespace {
-constexpr double kGuardLightMass = 0.01;
-}
+
 int World::guardSubsteps() {
     const TimeSettings& T = settings.time;
     if (!T.stabilityGuard || !isExplicit(T.integrator) || T.maxSubsteps <= T.substeps) return T.substeps;
@@ -130,7 +128,7 @@ int World::guardSubsteps() {
     const Revisions& now = state.revisions.observe(*this); // the estimate does not depend on dt
     GuardCache& G = state.guard;
     if (!G.stamp.fresh(now, GuardCache::kDeps)) {
-        G.stableStep = stableStepEstimate(cloth, settings, kGuardLightMass);
+        G.stableStep = guardStepEstimate(cloth, settings, kGuardLightMass);
         G.stamp.set(now);
     }
     const double need = std::ceil(double(T.frameDt) / G.stableStep);
