@@ -55,6 +55,21 @@ TEST(BallExperiments, OutcomesMatchTheThesisWithinTenPercentOfTheThreshold) {
         }
 }
 
+// Issue 12: the outcomes at twice the thesis resolution (96 x 96), where the unconverged solve
+// tore the ball that must slide over (ball-r2-v3: 156 tears). Three that fit the suite's time;
+// ball-r2-v10 (tears) takes 9 s here and holds too (bench/README.md, "Does the cloth hold?").
+// ball-r2-v3 still tears at 96 (7 tears as its ball slides off the bottom edge) and 144: the
+// issue's open part, not asserted.
+TEST(BallExperiments, OutcomesHoldAtTwiceTheResolution) {
+    for (const BallCase& c : {BallCase{"ball-r0.5-v3", true}, BallCase{"ball-r1-v3-low", false},
+                              BallCase{"ball-r1-v3-high", true}}) {
+        const nlohmann::json r = runScene(c.scene, 2.5, "--set cloth.resolution_x=96 --set cloth.resolution_y=96");
+        ASSERT_TRUE(r["finite"].get<bool>()) << c.scene;
+        EXPECT_EQ(r["tears_total"].get<uint64_t>() > 0, c.tears) << c.scene << " tears: " << r["tears_total"];
+        EXPECT_NEAR(r["uv_area"].get<double>(), 1.0, 1e-9) << c.scene;
+    }
+}
+
 TEST(TearScenes, PullAndTensionTearAndStayFinite) {
     for (const char* scene : {"pull", "tension --set tension.notch=1"}) {
         const nlohmann::json r = runScene(scene, 3.0, "--set tear.validate=1");
