@@ -46,7 +46,7 @@ TEST_F(CliTest, HeadlessRunWritesTheJsonReport) {
           "total_mass", "rest_area", "max_strain", "finite", "ms_per_step", "phases"})
         EXPECT_TRUE(j.contains(field)) << "report lacks '" << field << "'";
 
-    // The curtain defaults: 40 x 40 particles on 2 m x 2 m, 0.2 kg/m^2, 10 sub-steps at 60 Hz.
+    // The curtain defaults: 40 x 40 particles on 2 m x 2 m, 0.2 kg/m^2, at least 10 sub-steps at 60 Hz.
     const int n = 40;
     const long triangles = 2L * (n - 1) * (n - 1);
     const long springs = long(n) * n + triangles - 1; // Euler for a disc: V - E + F = 1
@@ -55,7 +55,9 @@ TEST_F(CliTest, HeadlessRunWritesTheJsonReport) {
     EXPECT_NEAR(j["seconds"].get<double>(), 0.5, 1e-4);
     EXPECT_EQ(j["steps"], 30);
     EXPECT_EQ(j["substeps"], 10);
-    EXPECT_NEAR(j["dt"].get<double>(), 1.0 / 600.0, 1e-9);
+    // dt: the sub-step the guard took (the frame over frame_substeps), at most 1/600 s.
+    EXPECT_NEAR(j["dt"].get<double>(), (1.0 / 60.0) / j["frame_substeps"].get<double>(), 1e-9);
+    EXPECT_LE(j["dt"].get<double>(), 1.0 / 600.0 + 1e-12);
     EXPECT_EQ(j["particles"], n * n);
     EXPECT_EQ(j["triangles"], triangles);
     EXPECT_EQ(j["springs"], springs);
@@ -95,6 +97,8 @@ TEST_F(CliTest, HeadlessRunWritesTheJsonReport) {
     // Every sub-step of the 30 frames: the guard's sub-steps for the material's stable step.
     const int substeps = 30 * j["frame_substeps"].get<int>();
     EXPECT_GE(substeps, 300);
+    EXPECT_EQ(j["guard_capped_springs"], 0); // the default curtain keeps the material as set
+    EXPECT_EQ(j["guard_stiffness_kept"], 1.0);
     EXPECT_EQ(phases["integrate"]["runs"], substeps);
     EXPECT_EQ(phases["collide"]["runs"], 0);        // no balls
     EXPECT_EQ(phases["contact"]["runs"], substeps); // the ground is on

@@ -99,6 +99,11 @@ public:
     uint64_t steps = 0;     // frames
     float maxStrain = 0;    // over structural springs, after the last sub-step
     int frameSubsteps = 0;  // sub-steps of the last frame (time.substeps, or more: see guardSubsteps)
+    // What the stability guard took from the material in the last frame: springs whose stiffness
+    // or damping it capped, and the smallest fractions of the stiffness and damping the user set
+    // that any spring kept (0 springs, 1 and 1: the material as set). Explicit integrators only.
+    size_t guardCappedSprings = 0;
+    float guardStiffnessKept = 1, guardDampingKept = 1;
     float maxSpeed = 0;     // m/s, fastest particle after the last frame
     bool asleep = false;    // at rest and not simulated until something can touch it (step/sleep.cpp)
     uint64_t sleptFrames = 0; // frames skipped asleep

@@ -200,14 +200,27 @@ void drawStatsPane(AppState& st, const World& world) {
     else if (st.clock.slowedDown)
         ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "slower than real time (%.0f%%)",
                            100.0 * s.simFps * world.settings.time.frameDt);
-    ImGui::Text("step %.2f ms  (%d sub-steps)", s.msPerStep, world.settings.time.substeps);
+    ImGui::Text("step %.2f ms  (%d sub-steps)", s.msPerStep, world.frameSubsteps);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Sub-steps of the last frame: the stability guard takes as many as the material\n"
+                          "needs to keep the stiffness you set (a finer or smaller cloth needs more),\n"
+                          "up to time.max_substeps.");
+    if (world.guardCappedSprings > 0)
+        ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "guard softened %zu springs (k to %.0f%%, damping to %.0f%%)",
+                           world.guardCappedSprings, 100.0 * world.guardStiffnessKept, 100.0 * world.guardDampingKept);
+    else
+        ImGui::TextDisabled("material as set: no spring softened");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Where the sub-steps the material needs exceed time.max_substeps, or for the light\n"
+                          "particles tearing makes, the guard caps springs so the step stays stable: the\n"
+                          "cloth is softer there than you set. Raise time.max_substeps to keep it.");
     // Neutral, not a warning: a cloth being pulled or hit runs out of passes as a matter of course;
     // a cloth at rest or in light wind that does is stretched past the limit (README, known gaps).
     ImGui::TextDisabled("limit out of passes: %.0f%% of sub-steps", 100.0 * s.limitCappedShare);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Sub-steps whose length limit used all limit.iterations passes with springs\n"
-                          "still over limit.max_stretch: the cloth ends them stretched further.\n"
-                          "More sub-steps (time.substeps) help most; more passes a little.");
+        ImGui::SetTooltip("Sub-steps whose length limit used all its passes (limit.iterations; with\n"
+                          "gauss-seidel up to 4 x the cloth's depth) with springs still over\n"
+                          "limit.max_stretch: the cloth ends them stretched further.");
     ImGui::Text("draw %.1f ms   swap %.1f ms", s.drawMs, s.swapMs);
     if (ImGui::BeginTable("phases", 2, ImGuiTableFlags_SizingStretchProp)) {
         for (int p = 0; p < int(Phase::Count); ++p) {

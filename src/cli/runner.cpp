@@ -1,4 +1,5 @@
 // Headless runner: load the scene, step, report.
+#include <algorithm>
 #include "runner.h"
 
 #include "clothtear/params.h"
@@ -44,7 +45,10 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"steps", w.steps},
         {"substeps", w.settings.time.substeps},
         {"frame_substeps", w.frameSubsteps}, // after the stability guard (time.max_substeps)
-        {"dt", double(w.settings.time.frameDt) / w.settings.time.substeps},
+        {"dt", double(w.settings.time.frameDt) / std::max(1, w.frameSubsteps > 0 ? w.frameSubsteps : w.settings.time.substeps)},
+        {"guard_capped_springs", w.guardCappedSprings}, // springs the guard softened (last frame)
+        {"guard_stiffness_kept", w.guardStiffnessKept}, // smallest fraction of the set stiffness kept
+        {"guard_damping_kept", w.guardDampingKept},     // and of the set damping
         {"integrator", formatParamValue(w.settings, *findParam("time.integrator"))},
         {"particles", c.particleCount()},
         {"pinned", pinned},

@@ -106,6 +106,20 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     fill(cloth.springs, ns, 0, m.stretchStiffness, m.stretchDamping);
     fill(cloth.bends, nb, ns, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
+    // What the guard took from the material, for the report and the stats pane.
+    S.cappedSprings = 0;
+    S.stiffnessKept = S.dampingKept = 1.f;
+    if (guard)
+        for (size_t e = 0; e < ns + nb; ++e) {
+            const bool structural = e < ns;
+            const Spring& s = structural ? cloth.springs[S.index[e]] : cloth.bends[S.index[e]];
+            const float asked = (structural ? m.stretchStiffness : m.bendStiffness) * s.weight;
+            const float askedDamping = (structural ? m.stretchDamping : m.bendDamping) * s.weight;
+            const bool capped = S.k[e] < asked * (1.f - 1e-6f) || S.kd[e] < askedDamping * (1.f - 1e-6f);
+            S.cappedSprings += capped;
+            if (asked > 0.f) S.stiffnessKept = std::min(S.stiffnessKept, S.k[e] / asked);
+            if (askedDamping > 0.f) S.dampingKept = std::min(S.dampingKept, S.kd[e] / askedDamping);
+        }
     S.maxRest = 0.f;
     for (size_t e = 0; e < ns; ++e) S.maxRest = std::max(S.maxRest, S.rest[e]);
     S.threadRange.clear(); // recomputed for the thread count in use

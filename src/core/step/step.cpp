@@ -107,6 +107,10 @@ void World::step() {
     state.substepsNow = frameSubsteps;
     for (int i = 0; i < frameSubsteps; ++i) substep();
     state.substepsNow = 0;
+    const bool springsExplicit = isExplicit(settings.time.integrator);
+    guardCappedSprings = springsExplicit ? state.springs.cappedSprings : 0;
+    guardStiffnessKept = springsExplicit ? state.springs.stiffnessKept : 1.f;
+    guardDampingKept = springsExplicit ? state.springs.dampingKept : 1.f;
     phaseBookkeeping(*this);
     ++steps;
     updateSleep(*this, state);

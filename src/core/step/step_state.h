@@ -41,6 +41,11 @@ struct SpringCache {
     std::vector<float> rest, k, kd;  // m, N/m, N s/m
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
+    // What the stability guard took from the material (World::guardCappedSprings reports it):
+    // springs whose stiffness or damping it capped, and the smallest fraction of the asked-for
+    // stiffness and damping any spring kept (1: none capped).
+    size_t cappedSprings = 0;
+    float stiffnessKept = 1, dampingKept = 1;
 };
 
 // Per-topology data of the limit phase (limit.cpp, tethers.h) and its per-sub-step work arrays.
