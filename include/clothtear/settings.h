@@ -15,7 +15,7 @@ enum class Integrator : int32_t { SemiImplicitEuler = 0, ForwardEuler = 1, Verle
 inline bool isExplicit(Integrator i) { return i == Integrator::SemiImplicitEuler || i == Integrator::ForwardEuler || i == Integrator::Verlet; }
 enum class AirModel : int32_t { Drag = 0, Keserica = 1 };
 // How the length limit's passes apply their corrections (src/core/step/limit.cpp):
-//   GaussSeidel  in place, spring after spring, in one canonical order (any thread count: the same result)
+//   GaussSeidel  in place, spring after spring, in one canonical order (the scan's)
 //   Jacobi       averaged and over-relaxed, each spring's share divided by its ends' correction counts
 enum class LimitSolver : int32_t { GaussSeidel = 0, Jacobi = 1 };
 enum class MeshType : int32_t { Grid = 0, Irregular = 1, Obj = 2 };

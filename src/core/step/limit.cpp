@@ -19,9 +19,9 @@
 //               the scan comes first so that a spring reaching its threshold is seen before anything
 //               pulls it back. The springs of the particles a tether moved are listed if it pushed
 //               them over the limit (a pull sideways, towards another anchor, can).
-//   3. passes   over the listed springs only (limit.solver): Gauss-Seidel, in place and in one
-//               canonical order, forwards and backwards in turn, by one thread (the result does not
-//               depend on the thread count); or averaged Jacobi over the threads. A pass drops the
+//   3. passes   over the listed springs only (limit.solver): Gauss-Seidel, in place, in one order
+//               (the threads' lists merged in thread order), forwards and backwards in turn, by one
+//               thread; or averaged Jacobi over the threads. A pass drops the
 //               springs back within the limit (to kLimitTolerance) and lists the springs of the
 //               particles it moved that it pushed over (particle-spring table), so a pass covers
 //               what a full pass would correct; they stop when a pass corrects nothing (passCap:
@@ -316,7 +316,7 @@ void LimitSolve::passes(int t, int nt) {
     std::vector<Index>& list = active[t];
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     if (gaussSeidel_ && nt > 1) {
-        // One list in scan order: the passes then do the same thing at any thread count.
+        // One list, the threads' lists in thread order: the scan's order, however the work was split.
         parallelBarrier(nt);
         if (t == 0)
             for (int k = 1; k < nt; ++k) {
