@@ -206,14 +206,15 @@ void drawStatsPane(AppState& st, const World& world) {
                           "needs to keep the stiffness you set (a finer or smaller cloth needs more),\n"
                           "up to time.max_substeps.");
     if (world.guardCappedSprings > 0)
-        ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "guard softened %zu springs (k to %.0f%%, damping to %.0f%%)",
+        ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "guard softened %zu springs:\n  k kept %.0f%%, damping %.0f%%",
                            world.guardCappedSprings, 100.0 * world.guardStiffnessKept, 100.0 * world.guardDampingKept);
     else
         ImGui::TextDisabled("material as set: no spring softened");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Where the sub-steps the material needs exceed time.max_substeps, or for the light\n"
                           "particles tearing makes, the guard caps springs so the step stays stable: the\n"
-                          "cloth is softer there than you set. Raise time.max_substeps to keep it.");
+                          "cloth is softer there than you set (k kept, damping: what the\n"
+                          "most softened spring kept). Raise time.max_substeps to keep it.");
     // Neutral, not a warning: a cloth being pulled or hit runs out of passes as a matter of course;
     // a cloth at rest or in light wind that does is stretched past the limit (README, known gaps).
     ImGui::TextDisabled("limit out of passes: %.0f%% of sub-steps", 100.0 * s.limitCappedShare);
