@@ -1,10 +1,13 @@
 // The limit phase: strain scan, tethers and Provot length limiting (Gauss-Seidel or averaged Jacobi).
 //
 // Provot length limiting (Onal 2.1.1): a spring longer than rest * (1 + maxStretch) pulls its ends
-// together, split by inverse mass; pinned ends never move. Corrections are Jacobi (each spring's
-// divided by the larger number of corrections its ends get, so momentum is conserved) and
-// over-relaxed, so the result does not depend on spring order: a fixed row-major Gauss-Seidel
-// sweep over stiff links is what makes some solvers blow up at high resolution.
+// together, split by inverse mass; pinned ends never move; every correction is an equal and
+// opposite pair, so momentum is conserved. limit.solver: Gauss-Seidel (default) applies each
+// spring's over-relaxed correction at once, so the next spring sees it: a pull travels along the
+// list within one pass, and a cloth hanging on the limit converges in passes of the order of its
+// depth (issue 12: averaged Jacobi at 12 passes left a 2 m cloth pinned on its side at strain
+// 0.12-0.16). Jacobi divides each spring's correction by the larger number of corrections its ends
+// get and applies them after the pass (its result does not depend on spring order).
 // A spring that tears this sub-step is left alone (Onal 3.2): the scan records every spring at
 // or above its tear threshold (the tear phase's candidates) and the passes skip them. If there are
 // more than tear.max_per_step candidates, only the most strained max_per_step are exempt; the
@@ -316,7 +319,7 @@ void LimitSolve::passes(int t, int nt) {
     std::vector<Index>& list = active[t];
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     if (gaussSeidel_ && nt > 1) {
-        // One list, the threads' lists in thread order: the scan's order, however the work was split.
+        // One list: the threads' lists in thread order.
         parallelBarrier(nt);
         if (t == 0)
             for (int k = 1; k < nt; ++k) {

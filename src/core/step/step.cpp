@@ -124,7 +124,6 @@ void World::step() {
 // triangles, and a torn cloth's small midpoint particles would otherwise multiply the sub-steps
 // of the whole cloth (a 2 m cloth at 65 x 65 went from 20 to 200 per frame after 11 tears); their
 // springs are capped instead, and the limit holds their length.
-
 int World::guardSubsteps() {
     const TimeSettings& T = settings.time;
     if (!T.stabilityGuard || !isExplicit(T.integrator) || T.maxSubsteps <= T.substeps) return T.substeps;
