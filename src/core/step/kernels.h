@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -155,9 +156,10 @@ namespace clothtear {
 // s = L / |d| - 1 < 0), the velocity away from the anchor, v.d > 0, is cancelled up to |delta| / dt:
 //   v += delta * min(1 / dt, (v.d) / (-s |d|^2)).
 // Without velocityFix (Verlet, whose velocity is the position change over dt) the move
-// is all velocity: v += delta / dt.
+// is all velocity: v += delta / dt. The moved particles are appended to `moved`, in order.
 inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const float* length, const uint8_t* cut,
-                         float maxRatio, float dt, bool velocityFix, const PackedParticle* packed, Vec3* x, Vec3* v) {
+                         float maxRatio, float dt, bool velocityFix, const PackedParticle* packed, Vec3* x, Vec3* v,
+                         std::vector<Index>& moved) {
     auto one = [&](size_t p) {
         const Index a = anchor[p];
         if (a == kNone || (cut && cut[p])) return;
@@ -169,6 +171,7 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
         const float s = L / std::sqrt(len2) - 1.f;
         const Vec3 delta(dx * s, dy * s, dz * s);
         x[p] = Vec3(P.x[0], P.x[1], P.x[2]) + delta;
+        moved.push_back(Index(p));
         if (!velocityFix) {
             v[p] = Vec3(P.v[0], P.v[1], P.v[2]) + delta * (1.f / dt);
             return;
@@ -244,6 +247,7 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
             }
             store4x3(x[p].data(), xn);
             store4x3(v[p].data(), vn);
+            for (int j = 0; j < 4; ++j) moved.push_back(Index(p + j));
             continue;
         }
         for (int j = 0; j < 4; ++j) {
@@ -252,6 +256,7 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
             store3(x[p + j], _mm_add_ps(xp[j], delta));
             // With coef 0 this writes back the velocity it read (packed v is v after integration).
             store3(v[p + j], _mm_add_ps(vv[j], _mm_mul_ps(delta, cj[j])));
+            moved.push_back(Index(p + j));
         }
     }
 #endif

@@ -211,19 +211,14 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
     if (!useTethers_) return;
     const uint8_t* cut = anyFound ? C_.cut.data() : nullptr;
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
-    tetherKernel(pc.begin, pc.end, C_.tether.data(), C_.length.data(), cut, ctx_.maxRatio * (1.f - kTetherSlack),
-                 ctx_.dt, ctx_.velocityFix, state_.packed.data(), x_, v_);
     // A tether's pull can stretch the particle's other springs past the limit (sideways, towards
     // another anchor): the passes must see them. The scan read the positions before the pull.
-    const PackedParticle* packed = state_.packed.data();
     std::vector<Index>& moved = T_.moved[t];
     moved.clear();
+    tetherKernel(pc.begin, pc.end, C_.tether.data(), C_.length.data(), cut, ctx_.maxRatio * (1.f - kTetherSlack),
+                 ctx_.dt, ctx_.velocityFix, state_.packed.data(), x_, v_, moved);
     const uint32_t stamp = stamp0_ + uint32_t(iterations_) + 1;
-    for (size_t p = pc.begin; p < pc.end; ++p)
-        if (x_[p].x() != packed[p].x[0] || x_[p].y() != packed[p].x[1] || x_[p].z() != packed[p].x[2]) {
-            movedIn_[p] = stamp;
-            moved.push_back(Index(p));
-        }
+    for (Index p : moved) movedIn_[p] = stamp;
     parallelBarrier(nt); // stamps complete (expand reads the other end's)
     expand(moved, stamp, T_.active[t]);
 }
