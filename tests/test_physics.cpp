@@ -18,6 +18,7 @@
 #include "clothtear/scenes.h"
 #include "clothtear/static_solve.h"
 #include "clothtear/world.h"
+#include "quiet_settings.h"
 
 #include <gtest/gtest.h>
 
@@ -32,21 +33,7 @@ namespace {
 
 // ========================================================================================== [HELPERS]
 
-// Settings with every force but the springs switched off: no gravity, no air, no damping, no
-// limiting, no tearing, no ground, no wind.
-Settings quietSettings() {
-    Settings s;
-    s.gravity = GravitySettings{0.f, 0.f, 0.f};
-    s.air.dragCoefficient = 0.f;
-    s.material.stretchDamping = 0.f;
-    s.material.bendDamping = 0.f;
-    s.limit.enabled = false;
-    s.tear.enabled = false;
-    s.collision.ground = false;
-    s.wind.enabled = false;
-    s.cloth.pin = PinMode::None;
-    return s;
-}
+using test::quietSettings; // quiet_settings.h
 
 // A triangle soup whose UVs are the x-y rest coordinates.
 MeshData meshOf(std::vector<Vec3d> positions, std::vector<std::array<Index, 3>> triangles) {
