@@ -83,6 +83,21 @@ struct ImplicitCacheSlot {
     ImplicitCacheSlot& operator=(const ImplicitCacheSlot&);
 };
 
+// The triangles as the wind kernel reads them (wind.cpp): corners as byte offsets (16 * particle,
+// as the spring cache), the area the wind may catch (twice the rest area: a sliver torn to nothing
+// must not catch more than its share) and the corners' largest inverse mass (the guard's cap).
+struct WindTriangle {
+    uint32_t p16[3];
+    float areaCap; // m^2
+    float wMax;    // 1/kg
+};
+struct WindCache {
+    static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass;
+    CacheStamp stamp;
+    std::vector<WindTriangle> triangles;
+    std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
+};
+
 // The stability guard's estimate of the stable sub-step (stability.cpp), cached.
 struct GuardCache {
     static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial;
@@ -116,6 +131,7 @@ struct StepState {
     SpringCache springs;
     LimitCache limit;
     GuardCache guard;
+    WindCache wind;
     ImplicitCacheSlot implicit;
     ThreadBuffers threads;
     std::vector<PackedParticle> packed;         // per particle: x and v for the spring kernels
