@@ -118,6 +118,10 @@ struct SceneParams {
     float ballSpeed = 3.f;   // m/s  thrown balls
     float ballMass = 2.f;    // kg   thrown balls
     float ballHeight = 0.5f; // fraction of cloth height from bottom where the ball is aimed
+    // m: the hand's size. A drag (app) and the pull scene hold every particle within this distance
+    // in the material (rest space) of the grabbed one, so a pull acts on the same patch of cloth at
+    // any resolution; 0 holds the one particle.
+    float grabRadius = 0.08f;
 };
 
 struct CheckSettings {

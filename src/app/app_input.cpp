@@ -115,7 +115,7 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
             if (e.code == 0) {
                 switch (state_.tool) {
                 case Tool::Drag:
-                    if (!beginDrag(world_, state_.drag, view, cursor, state_.tools.grabRadius)) state_.say("Drag: no cloth under the cursor");
+                    if (!beginDrag(world_, state_.drag, view, cursor, world_.settings.scene.grabRadius)) state_.say("Drag: no cloth under the cursor");
                     break;
                 case Tool::Wind:
                     if (!state_.tools.windFixed) state_.windBlowing = true, state_.windSource = windSourceAt(view, cursor);

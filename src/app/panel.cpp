@@ -41,9 +41,7 @@ void toolOptions(AppState& st, World& world) {
                            "tear. X pins it where it is.");
         ImGui::SliderFloat("max speed", &t.maxDragSpeed, 1.f, 500.f, "%.0f m/s", ImGuiSliderFlags_Logarithmic);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("How fast the grabbed particle may chase the cursor");
-        ImGui::SliderFloat("grab radius", &t.grabRadius, 0.f, 1.f, "%.3f m", ImGuiSliderFlags_AlwaysClamp);
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("0: hold one particle (tears easily). Larger: hold a patch, spreading the pull");
+        paramWidgets(world.settings, "grab.", st.allowUnsafe);
         break;
     case Tool::Wind:
         ImGui::SliderFloat("strength", &t.windPressure, 0.f, 2000.f, "%.3g Pa",

@@ -20,8 +20,6 @@ struct ToolSettings {
     float impulse = 3.f;       // m/s, [0, 50]     impulse tool velocity change at the centre
     bool windFixed = false;    //                  wind source fixed in place; it blows until unfixed
     float maxDragSpeed = 40.f; // m/s, [1, 500]    how fast the grabbed particle may chase the cursor
-    float grabRadius = 0.08f;  // m, [0, 1]        the drag also holds the particles this close to the grabbed one
-                               //                  (0: the one particle; larger spreads the pull over a patch)
 };
 
 // What the tools need to know about the view: camera and window size (window coordinates).
@@ -42,7 +40,7 @@ struct DragState {
         bool wasPinned;
         Vec3 offset; // from the grabbed particle at grab time
     };
-    std::vector<Held> patch;           // the other particles within grabRadius, moved rigidly with it
+    std::vector<Held> patch;           // the other particles within grab.radius, moved rigidly with it
     Vec3 planePoint = Vec3::Zero();    // the camera-facing plane through the grab point
     Vec3 planeNormal = Vec3::UnitZ();
     Vec3 grabOffset = Vec3::Zero();    // particle minus hit point at grab time

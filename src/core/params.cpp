@@ -94,9 +94,12 @@ const ParamInfo kParams[] = {
     CT_F("cloth.tilt", cloth.tilt, -90, 90, -90, 90, "deg", "Rotation about the top edge (90 = horizontal)", true),
 
     CT_F("pull.angle", scene.pullAngle, -180, 180, -360, 360, "deg", "Pull scene: direction in the cloth plane, 0 = down", true),
-    CT_F("pull.speed", scene.pullSpeed, 0, 5, 0, 100, "m/s", "Pull scene: speed of the grabbed particle", true),
+    CT_F("pull.speed", scene.pullSpeed, 0, 5, 0, 100, "m/s", "Pull scene: speed of the hand (the particles within grab.radius of the bottom centre)", true),
     CT_F("tension.speed", scene.tensionSpeed, 0, 2, 0, 100, "m/s", "Tension scene: speed of each clamp", true),
     CT_B("tension.notch", scene.tensionNotch, "Tension scene: cut a short slit in the middle", true),
+    CT_F("grab.radius", scene.grabRadius, 0, 1, 0, 10, "m",
+         "The hand's size: a drag and the pull scene hold every particle within this rest distance of the grabbed one (0: one particle)",
+         false),
     CT_F("ball.radius", scene.ballRadius, 0.05, 5, 0.001, 100, "m", "Radius of thrown balls", false),
     CT_F("ball.speed", scene.ballSpeed, 0, 30, 0, 1000, "m/s", "Speed of thrown balls", false),
     CT_F("ball.mass", scene.ballMass, 0.05, 100, 1e-4, 1e5, "kg", "Mass of thrown balls", false),
