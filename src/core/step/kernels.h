@@ -169,6 +169,9 @@ inline void tetherKernel(size_t begin, size_t end, const Index* anchor, const fl
         const float len2 = dx * dx + dy * dy + dz * dz, L = maxRatio * length[p];
         if (len2 <= L * L) return;
         const float s = L / std::sqrt(len2) - 1.f;
+        // len2 just above L^2 can round to s = 0: nothing to move, and the velocity fix below would
+        // divide by -0 and multiply the zero move by -inf (NaN; a ball scene at 96 a side).
+        if (!(s < 0.f)) return;
         const Vec3 delta(dx * s, dy * s, dz * s);
         x[p] = Vec3(P.x[0], P.x[1], P.x[2]) + delta;
         moved.push_back(Index(p));
