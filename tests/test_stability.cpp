@@ -156,11 +156,6 @@ TEST(Stability, GuardCapsEachSpringAtAThirdOfItsStableStiffness) {
 Settings randomSafeSettings(Rng& rng) {
     Settings s;
     for (const ParamInfo& p : allParams()) {
-        // grab.radius is read by the app's drag and the pull scene only, neither of which runs here;
-        // not drawing it keeps the draws of the others as they were before it was added. (Drawn, it
-        // shifts them, and the shifted run 7, forward Euler with an 83 kg ball and a drag, explodes
-        // after its tears: a known gap, README "Status and known gaps".)
-        if (std::string_view(p.name) == "grab.radius") continue;
         double v = 0;
         switch (p.type) {
         case ParamType::Float:
