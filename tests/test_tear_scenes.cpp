@@ -106,16 +106,20 @@ TEST(TearScenes, PullTearsNextToTheGrabAcrossThePull) {
 // the rip does not depend on the resolution. Holding one particle, it tore out alone (3 tears at 40
 // and at 80 a side). At 40 and 80 a side, pulled straight down: the rip starts at the same time
 // (within 10 %), runs across the pull (its principal axis within 20 deg of horizontal) and has
-// about the same length in metres (within 25 %).
+// about the same length in metres (within 25 %), and leaves the same pieces: the sheet and what the
+// hand tore out, no scraps (the smallest piece is over 0.1 m^2, some ten rest triangles at 40).
 namespace {
 struct Rip {
     double firstTime = 0, axisDeg = 0, length = 0;
-    size_t tears = 0;
+    size_t tears = 0, pieces = 0;
+    double smallestPiece = 0; // m^2
 };
 Rip ripOf(const nlohmann::json& r) {
     Rip rip;
     const nlohmann::json& ev = r["tear_events"];
     rip.tears = ev.size();
+    rip.pieces = r["pieces"]["count"].get<size_t>();
+    rip.smallestPiece = r["pieces"]["smallest_area"].get<double>();
     if (ev.empty()) return rip;
     rip.firstTime = ev[0]["time"].get<double>();
     double mx = 0, my = 0;
@@ -143,11 +147,13 @@ TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
     const int res[2] = {40, 80};
     for (int k = 0; k < 2; ++k) {
         const std::string r = std::to_string(res[k]);
-        rips[k] = ripOf(runScene("pull", 3.0, "--set pull.angle=0 --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r));
+        rips[k] = ripOf(runScene("pull", 4.0, "--set pull.angle=0 --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r));
         ASSERT_GE(rips[k].tears, 5u) << res[k];
         EXPECT_LT(std::min(rips[k].axisDeg, 180.0 - rips[k].axisDeg), 20.0) << res[k];
         EXPECT_GT(rips[k].length, 1.0) << res[k]; // a rip, not the hand torn out (0.6 m across)
+        EXPECT_GT(rips[k].smallestPiece, 0.1) << res[k];
     }
+    EXPECT_EQ(rips[1].pieces, rips[0].pieces);
     EXPECT_NEAR(rips[1].firstTime, rips[0].firstTime, 0.1 * rips[0].firstTime);
     EXPECT_NEAR(rips[1].length, rips[0].length, 0.25 * std::max(rips[0].length, rips[1].length));
 }

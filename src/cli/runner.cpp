@@ -3,6 +3,7 @@
 #include "runner.h"
 
 #include "clothtear/params.h"
+#include "clothtear/pieces.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 
@@ -12,6 +13,25 @@
 #include <iostream>
 
 namespace clothtear {
+namespace {
+
+// The torn pieces (pieces.h): how many, the rest area (m^2) and mass (kg) of the largest 32, and
+// the smallest piece's area and triangle count (confetti shows there).
+nlohmann::json piecesReport(const Cloth& cloth) {
+    const std::vector<Piece> pieces = findPieces(cloth);
+    nlohmann::json areas = nlohmann::json::array(), masses = nlohmann::json::array();
+    for (size_t k = 0; k < pieces.size() && k < 32; ++k) {
+        areas.push_back(pieces[k].restArea);
+        masses.push_back(pieces[k].mass);
+    }
+    return nlohmann::json{{"count", pieces.size()},
+                          {"areas", areas},
+                          {"masses", masses},
+                          {"smallest_area", pieces.empty() ? 0.0 : pieces.back().restArea},
+                          {"smallest_triangles", pieces.empty() ? size_t(0) : pieces.back().triangles}};
+}
+
+} // namespace
 
 nlohmann::json makeReport(const World& w, const std::string& scene, double wallSeconds) {
     using nlohmann::json;
@@ -75,6 +95,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"substeps_run", w.profile.substeps},
         {"tears", tears},
         {"tears_total", w.tearLog.total()},
+        {"pieces", piecesReport(c)},
         {"tear_events", events},
         {"validation_error", w.tearLog.validationError}, // first invariant violation (tear.validate=1)
         {"balls", balls},

@@ -1,0 +1,22 @@
+// Torn pieces: the connected islands of a cloth. Two triangles belong to one piece when a chain of
+// triangles sharing particles joins them (a one-point connection, Onal 3.2.3, still holds its two
+// parts together). Computed on demand from the topology (the report, the stats pane, tests).
+#pragma once
+#include "clothtear/cloth.h"
+
+#include <vector>
+
+namespace clothtear {
+
+struct Piece {
+    size_t triangles = 0;
+    size_t particles = 0;
+    double restArea = 0; // m^2: the rest area of its triangles
+    double mass = 0;     // kg: density x rest area
+};
+
+// The pieces of `cloth`, largest rest area first (ties: fewer triangles first, then the order in
+// which their first triangles appear). An untorn cloth is one piece with its whole rest area.
+std::vector<Piece> findPieces(const Cloth& cloth);
+
+} // namespace clothtear

@@ -1,0 +1,61 @@
+// Connected islands by union-find over particles: every triangle joins its three corners.
+#include "clothtear/pieces.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace clothtear {
+namespace {
+
+Index findRoot(std::vector<Index>& parent, Index p) {
+    while (parent[p] != p) {
+        parent[p] = parent[parent[p]]; // path halving
+        p = parent[p];
+    }
+    return p;
+}
+
+} // namespace
+
+std::vector<Piece> findPieces(const Cloth& cloth) {
+    const size_t n = cloth.particleCount();
+    std::vector<Index> parent(n);
+    std::iota(parent.begin(), parent.end(), Index(0));
+    for (const Triangle& t : cloth.triangles)
+        for (int k = 1; k < 3; ++k) {
+            const Index a = findRoot(parent, t.p[0]), b = findRoot(parent, t.p[k]);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        }
+    // One piece per root that owns a triangle, numbered in order of its first triangle (the sort
+    // below is stable, so that order breaks ties).
+    std::vector<int64_t> pieceOf(n, -1);
+    std::vector<Piece> pieces;
+    for (size_t i = 0; i < cloth.triangles.size(); ++i) {
+        const Triangle& t = cloth.triangles[i];
+        const Index r = findRoot(parent, t.p[0]);
+        if (pieceOf[r] < 0) {
+            pieceOf[r] = int64_t(pieces.size());
+            pieces.emplace_back();
+        }
+        Piece& piece = pieces[size_t(pieceOf[r])];
+        piece.triangles++;
+        piece.restArea += t.restArea;
+    }
+    for (size_t p = 0; p < n; ++p) {
+        const int64_t k = pieceOf[findRoot(parent, Index(p))];
+        if (k >= 0) pieces[size_t(k)].particles++;
+    }
+    for (Piece& piece : pieces) piece.mass = double(cloth.density) * piece.restArea;
+    std::vector<size_t> order(pieces.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        if (pieces[a].restArea != pieces[b].restArea) return pieces[a].restArea > pieces[b].restArea;
+        return pieces[a].triangles < pieces[b].triangles;
+    });
+    std::vector<Piece> sorted;
+    sorted.reserve(pieces.size());
+    for (size_t k : order) sorted.push_back(pieces[k]);
+    return sorted;
+}
+
+} // namespace clothtear
