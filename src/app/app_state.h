@@ -52,6 +52,14 @@ struct Stats {
 
 inline constexpr uint8_t kBallThrown = 1, kBallTouched = 2;
 
+// The stats pane's count of torn pieces (findPieces), recomputed only when the cloth's topology or
+// masses change (a tear, a pin, a rebuild: massRevision is unique per build).
+struct PiecesSummary {
+    uint64_t topology = ~0ull, mass = ~0ull;
+    size_t count = 0;
+    double smallestArea = 0; // m^2
+};
+
 struct AppState {
     // ---- scene
     std::string scene = "curtain";
@@ -60,6 +68,7 @@ struct AppState {
     Tool tool = Tool::Drag;
     ToolSettings tools;
     DragState drag;
+    PiecesSummary pieces;
     WindSource windSource;    // where the wind tool blows (follows the cursor unless fixed)
     bool windBlowing = false; // the wind tool's button is held
     // ---- view

@@ -11,6 +11,7 @@
 #include "param_widgets.h"
 
 #include "clothtear/params.h"
+#include "clothtear/pieces.h"
 #include "clothtear/scenes.h"
 
 #include <imgui.h>
@@ -238,6 +239,13 @@ void drawStatsPane(AppState& st, const World& world) {
     ImGui::Text("triangles %zu", c.triangles.size());
     ImGui::Text("tears: basic %llu  weak %llu  one-point %llu", (unsigned long long)world.tearLog.counts[0],
                 (unsigned long long)world.tearLog.counts[1], (unsigned long long)world.tearLog.counts[2]);
+    PiecesSummary& ps = st.pieces;
+    if (ps.topology != c.topologyRevision || ps.mass != c.massRevision) {
+        const std::vector<Piece> pieces = findPieces(c);
+        ps = {c.topologyRevision, c.massRevision, pieces.size(), pieces.empty() ? 0.0 : pieces.back().restArea};
+    }
+    if (ps.count > 1) ImGui::Text("pieces %zu (smallest %.3g m^2)", ps.count, ps.smallestArea);
+    else ImGui::Text("pieces %zu", ps.count);
     const double ke = world.kineticEnergy(), pe = world.potentialEnergy();
     ImGui::Text("energy: kinetic %.3g J, potential %.3g J", ke, pe);
     ImGui::Text("max strain %.3f (tears at %.2f)", world.maxStrain, world.settings.tear.threshold);
