@@ -1,7 +1,12 @@
 // The window app's options (app_options.h), registered on the shared parser of run_options.h.
 #include "app_options.h"
 
+#include "controls.h"
+
 #include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <string>
 
 namespace clothtear::app {
 
@@ -12,6 +17,14 @@ int parseAppOptions(int argc, char** argv, AppOptions& o) {
         cli.add_option("--screenshot", o.screenshot, "App: write a PNG of the last frame to FILE");
         cli.add_option("--script", o.script, "App: replay an input script");
         cli.add_option("--record", o.record, "App: record input to a script file");
+        // The keys and mouse, from the table the help overlay (F1) shows.
+        std::string keys = "\nIn the window (F1 shows this too):\n";
+        for (const ControlHelp& c : controlsHelp()) {
+            std::string input = c.input;
+            input.resize(std::max<size_t>(input.size(), 20), ' ');
+            keys += "  " + input + "  " + c.action + "\n";
+        }
+        cli.footer(keys);
     };
     // The window's options mean nothing without a window: refuse them rather than ignore them.
     extension.check = [](const CLI::App& cli, const RunOptions& run) -> std::string {

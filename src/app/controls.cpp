@@ -7,7 +7,7 @@ namespace {
 const ControlHelp kControls[] = {
     {"Left button", "Use the active tool (Drag, Wind, Impulse, Ball, Pin)"},
     {"1 2 3 4 5", "Tool: Drag / Wind / Impulse / Ball / Pin"},
-    {"Drag tool", "Left drag pulls the particle under the cursor; pull hard to tear"},
+    {"Drag tool", "Left drag pulls the cloth under the cursor (a patch of grab.radius); pull hard to tear"},
     {"X (while dragging)", "Pin the grabbed particle where it is and let go"},
     {"Wind tool", "Hold left to blow along the view; wheel = strength; L fixes the source"},
     {"Impulse tool", "Left click pushes away, right click pulls towards you"},

@@ -213,6 +213,14 @@ TEST(AppWindow, NoDisplaySaysSoAndNamesBothRemedies) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
 }
 
+// --help names the keys (issue 13: a first run that works), from the controls table F1 shows.
+TEST(AppWindow, HelpListsTheKeys) {
+    const AppRun r = runApp("--help", false);
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* key : {"F1", "Right drag", "Ctrl+Q", "1 2 3 4 5", "pull hard to tear"})
+        EXPECT_NE(r.output.find(key), std::string::npos) << key << " missing from:\n" << r.output;
+}
+
 TEST(AppWindow, HeadlessStillWorksWithoutADisplay) {
     AppRun r = runApp("--headless --scene curtain --seconds 0.1", false);
     EXPECT_EQ(r.status, 0) << r.output;
