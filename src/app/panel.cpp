@@ -38,8 +38,9 @@ void toolOptions(AppState& st, World& world) {
     ToolSettings& t = st.tools;
     switch (st.tool) {
     case Tool::Drag:
-        ImGui::TextWrapped("Left drag pulls the cloth under the cursor (every particle within the radius, in the "
-                           "material) in the camera-facing plane; pull hard to tear. X pins it where it is.");
+        // Three lines: the texture tests click the sections below at fixed places.
+        ImGui::TextWrapped("Left drag pulls the cloth within the radius below in the camera-facing plane; pull "
+                           "hard to tear. X pins it where it is.");
         ImGui::SliderFloat("max speed", &t.maxDragSpeed, 1.f, 500.f, "%.0f m/s", ImGuiSliderFlags_Logarithmic);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("How fast the grabbed particle may chase the cursor");
         paramWidgets(world.settings, "grab.", st.allowUnsafe);
