@@ -46,16 +46,11 @@ std::vector<Piece> findPieces(const Cloth& cloth) {
         if (k >= 0) pieces[size_t(k)].particles++;
     }
     for (Piece& piece : pieces) piece.mass = double(cloth.density) * piece.restArea;
-    std::vector<size_t> order(pieces.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        if (pieces[a].restArea != pieces[b].restArea) return pieces[a].restArea > pieces[b].restArea;
-        return pieces[a].triangles < pieces[b].triangles;
+    std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+        if (a.restArea != b.restArea) return a.restArea > b.restArea;
+        return a.triangles < b.triangles;
     });
-    std::vector<Piece> sorted;
-    sorted.reserve(pieces.size());
-    for (size_t k : order) sorted.push_back(pieces[k]);
-    return sorted;
+    return pieces;
 }
 
 } // namespace clothtear

@@ -53,8 +53,7 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
         xpbdStep(cloth, in, state.xpbdDx);
     }
     for (Index p = 0; p < n; ++p)
-        state.packed[p] = PackedParticle{{cloth.x[p].x(), cloth.x[p].y(), cloth.x[p].z(), 0.f},
-                                         {cloth.v[p].x(), cloth.v[p].y(), cloth.v[p].z(), 0.f}};
+        state.packed[p] = packedOf(cloth.x[p], cloth.v[p]);
     state.verletRunning = false;
     moveDrivers(ctx, cloth, state);
 }

@@ -171,10 +171,7 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     PackedParticle* packed = state.packed.data();
     parallelRegion(ns + nb, nt, [&](int t, int nt2) {
         const Chunk pc = chunkOf(n, t, nt2);
-        for (size_t p = pc.begin; p < pc.end; ++p) {
-            PackedParticle& q = packed[p];
-            q = PackedParticle{{x[p].x(), x[p].y(), x[p].z(), 0.f}, {v[p].x(), v[p].y(), v[p].z(), 0.f}};
-        }
+        for (size_t p = pc.begin; p < pc.end; ++p) packed[p] = packedOf(x[p], v[p]);
         parallelBarrier(nt2);
         Eigen::Vector4f* acc = state.threads.acc[t].data();
         const auto c = chunks(t);

@@ -28,6 +28,9 @@ struct alignas(32) PackedParticle {
     float x[4];
     float v[4];
 };
+inline PackedParticle packedOf(const Vec3& x, const Vec3& v) {
+    return PackedParticle{{x.x(), x.y(), x.z(), 0.f}, {v.x(), v.y(), v.z(), 0.f}};
+}
 
 // The springs as the kernels read them (springs.cpp, kernels.h): structural, then bend-shear, one
 // array per field, ends as byte offsets (16 * particle), stiffness and damping after the stability

@@ -46,8 +46,6 @@ struct WindKernelInput {
 // Triangles [begin, end) into `acc`: F = c A (n . v_rel) |n . v_rel| n on each corner's share, with
 // n = cross / |cross| for the corners' cross product, so the force is (mag / |cross|) cross.
 void windKernel(const WindKernelInput& in, size_t begin, size_t end, Acc4* acc) {
-    const char* px = reinterpret_cast<const char*>(in.packed); // particle at 2 * offset
-    char* pf = reinterpret_cast<char*>(acc);                   // accumulator at offset
     // The force factor from the squared cross norm, the cross product's dot with v_rel and the
     // triangle: 0 for a degenerate triangle.
     auto factor = [&](const WindTriangle& t, float cross2, float crossDotV) {
@@ -67,6 +65,8 @@ void windKernel(const WindKernelInput& in, size_t begin, size_t end, Acc4* acc) 
         return mag * inv;
     };
 #if defined(__SSE2__)
+    const char* px = reinterpret_cast<const char*>(in.packed); // particle at 2 * offset
+    char* pf = reinterpret_cast<char*>(acc);                   // accumulator at offset
     const __m128 wind = _mm_setr_ps(in.wind[0], in.wind[1], in.wind[2], 0.f);
     const __m128 third = _mm_set1_ps(1.f / 3.f);
     auto yzx = [](__m128 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)); };
@@ -109,7 +109,6 @@ void windKernel(const WindKernelInput& in, size_t begin, size_t end, Acc4* acc) 
         for (const uint32_t off : t.p16) accAt(acc, off) += fv;
     }
 #endif
-    (void)pf;
 }
 
 } // namespace
@@ -141,8 +140,7 @@ void phaseWind(const StepContext& ctx, Cloth& cloth, StepState& state) {
     if (ctx.reference) {
         const size_t n = cloth.particleCount();
         for (size_t p = 0; p < n; ++p)
-            state.packed[p] = PackedParticle{{cloth.x[p].x(), cloth.x[p].y(), cloth.x[p].z(), 0.f},
-                                             {cloth.v[p].x(), cloth.v[p].y(), cloth.v[p].z(), 0.f}};
+            state.packed[p] = packedOf(cloth.x[p], cloth.v[p]);
     }
     for (int t = 0; t < threads; ++t) { // the integrator reads each buffer over what wrote to it
         auto& r = state.threads.range[size_t(t)];
