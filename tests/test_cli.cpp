@@ -113,6 +113,38 @@ TEST_F(CliTest, JsonToStdout) {
     EXPECT_EQ(j["steps"], 6);
 }
 
+// --mesh puts any scene on an OBJ (the same as --scene SCENE:obj:FILE); a missing file is named;
+// a cloth pinned whole is warned about on stderr and in the report.
+TEST_F(CliTest, MeshOptionComposesAnObjWithTheSceneAndWarnings) {
+    clothtear::MeshData m = clothtear::makeGridMesh(9, 7, 1.0, 0.8);
+    for (clothtear::Vec3d& p : m.positions) p = clothtear::Vec3d(p.x(), 0.0, -p.y()); // flat, as a modeller exports a plane
+    const fs::path obj = dir / "flat.obj";
+    ASSERT_TRUE(clothtear::saveObj(m, obj.string()));
+    RunResult r = run("--headless --scene pull --mesh '" + obj.string() + "' --seconds 0.1 --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["scene"], "pull:obj:" + obj.string());
+    EXPECT_EQ(j["particles"], 63);
+    EXPECT_TRUE(j["warnings"].empty()) << j["warnings"];
+    // The top (far) row and the hand, as on the same grid built in; not every particle.
+    const RunResult grid = run("--headless --scene pull --set cloth.resolution_x=9 --set cloth.resolution_y=7 "
+                               "--set cloth.width=1 --set cloth.height=0.8 --seconds 0.1 --json -");
+    ASSERT_EQ(grid.status, 0) << grid.err;
+    const int pinned = nlohmann::json::parse(grid.out)["pinned"];
+    EXPECT_GT(pinned, 9);
+    EXPECT_EQ(j["pinned"], pinned);
+
+    const std::string missing = "--headless --scene pull --mesh '" + (dir / "none.obj").string() + "' --seconds 0.1";
+    expectRefused(run(missing), missing, {"none.obj"});
+
+    r = run("--headless --seconds 0.05 --set cloth.resolution_x=2 --set cloth.pin=sides --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["warnings"].size(), 1u);
+    EXPECT_NE(j["warnings"][0].get<std::string>().find("every particle is pinned"), std::string::npos);
+    EXPECT_NE(r.err.find("warning: every particle is pinned"), std::string::npos) << r.err;
+}
+
 // --config: the file's scene and parameters, with --scene and --set on the command line winning.
 TEST_F(CliTest, ConfigFileSetsSceneAndParametersAndTheCommandLineWins) {
     const std::string cfg = write("run.cfg", "# corners, coarse\nscene = corners\ncloth.resolution_x = 10\n"

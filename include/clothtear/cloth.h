@@ -21,6 +21,8 @@ enum ParticleFlags : uint8_t {
     kWeak = 1u << 1,   // tip of a tear: springs touching it tear at the weak threshold (Onal 3.2.2)
     kHinge = 1u << 2,  // one-point connection: two parts of the cloth meet only here (Onal 3.2.3)
     kTouched = 1u << 3, // under a ball this sub-step (set by the collide phase, cleared by the contact phase)
+    kHem = 1u << 4,     // on an edge the pin mode pinned: springs touching it tear at tear.seam_strength x the
+                        // threshold (a sewn hem stays strong when a tool unpins it)
 };
 
 // A spring as the hot loops see it. Per-spring constants come from the material at use:

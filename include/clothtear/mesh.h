@@ -36,6 +36,25 @@ Result<MeshData> parseObj(std::string_view text, const std::string& source);
 // Writes a MeshData as OBJ with one vt per triangle corner.
 bool saveObj(const MeshData& mesh, const std::string& path);
 
+// The frame a setup reads a mesh in (pin modes, the pull's hand, the ball's aim): the mesh's own plane,
+// fitted through its points, with "up" the in-plane direction nearest world +y and "right" = up x
+// normal. A mesh lying flat (a plane exported from a modeller) has no in-plane +y: its far edge (-z)
+// is its top, as seen from a camera on +z. The normal faces +z for an upright mesh and +y for a flat
+// one. Axes within 1e-9 of a world axis are snapped to it, so the built-in meshes (x-y plane) get
+// exactly x, y and z, and u = x, v = y about their centre.
+struct MeshFrame {
+    Vec3d centre = Vec3d::Zero(); // the mean of the points
+    Vec3d right = Vec3d::UnitX(), up = Vec3d::UnitY(), normal = Vec3d::UnitZ();
+    double minU = 0, maxU = 0, minV = 0, maxV = 0; // the points' extent along right (u) and up (v)
+
+    double u(const Vec3d& p) const { return (p - centre).dot(right); }
+    double v(const Vec3d& p) const { return (p - centre).dot(up); }
+    Vec3d at(double u, double v) const { return centre + u * right + v * up; }
+    double width() const { return maxU - minU; }
+    double height() const { return maxV - minV; }
+};
+MeshFrame meshFrame(const std::vector<Vec3d>& points);
+
 // What every mesh source is held to (checkMesh), so that the step's float state and the tear code
 // can represent the cloth: positions within +-kMaxCoordinate (float keeps ~1 cm there), texture
 // coordinates within +-kMaxUv, no edge shorter than kMinEdge (a spring's rest length as a float), and

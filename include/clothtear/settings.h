@@ -84,6 +84,7 @@ struct TearSettings {
     float threshold = 0.35f;        // strain  basic tear when (len-rest)/rest exceeds it
     float weakThreshold = 0.2f;     // strain  lower threshold for springs touching a weak point
     float onePointThreshold = 0.2f; // strain  threshold for one-point connections
+    float seamStrength = 3.f;       // x threshold  springs touching a hem (pinned edge) tear at this multiple
     int32_t maxPerStep = 64;        // count   cap on tears per sub-step
     bool validate = false;          // run the full topology validation after every tear
 };
@@ -115,7 +116,7 @@ struct SceneParams {
     float tensionSpeed = 0.5f; // m/s tension scene: each clamp moves outward at this speed
     bool tensionNotch = false; // tension scene: pre-cut slit in the middle
     float ballRadius = 0.5f; // m    thrown balls
-    float ballSpeed = 3.f;   // m/s  thrown balls
+    float ballSpeed = 8.f;   // m/s  thrown balls (the tool from the start camera needs about 5)
     float ballMass = 2.f;    // kg   thrown balls
     float ballHeight = 0.5f; // fraction of cloth height from bottom where the ball is aimed
     // m: the hand's size. A drag (app) and the pull scene hold every particle within this distance

@@ -18,10 +18,14 @@ struct TearCandidate {
 
 // The one rule for the strain at which a structural spring tears (Onal 3.2.1-3.2.3), read by the
 // strain scan (which lists and exempts candidates) and by the tear module (which picks the mode).
+// Springs touching a hem (kHem: an edge the pin mode pinned) tear at tear.seam_strength x
+// tear.threshold, whatever else they touch: a rip that reaches the hem stops there (issue 13).
 // Springs touching a weak point or a one-point connection tear from the lower of those thresholds,
 // or from tear.threshold if that is lower still; any other spring from tear.threshold.
 inline float weakEndThreshold(const TearSettings& T) { return std::min(T.weakThreshold, T.onePointThreshold); }
-inline float tearStrainFor(const TearSettings& T, bool weakEnd) {
+inline float hemThreshold(const TearSettings& T) { return T.threshold * std::max(1.f, T.seamStrength); }
+inline float tearStrainFor(const TearSettings& T, bool weakEnd, bool hemEnd = false) {
+    if (hemEnd) return hemThreshold(T);
     return weakEnd ? std::min(weakEndThreshold(T), T.threshold) : T.threshold;
 }
 

@@ -37,8 +37,12 @@ static_assert(clothtear::app::keys::A == GLFW_KEY_A && clothtear::app::keys::F1 
               clothtear::app::keys::RightSuper == GLFW_KEY_RIGHT_SUPER && clothtear::app::keys::F12 == GLFW_KEY_F12 &&
               clothtear::app::keys::Home == GLFW_KEY_HOME && GLFW_MOUSE_BUTTON_RIGHT == 1 && GLFW_MOUSE_BUTTON_MIDDLE == 2);
 
+// The PNGs tools/make_fabric.cpp writes at build time (src/app/CMakeLists.txt).
 #ifndef CLOTHTEAR_DEFAULT_TEXTURE
 #define CLOTHTEAR_DEFAULT_TEXTURE ""
+#endif
+#ifndef CLOTHTEAR_NUMBERED_TEXTURE
+#define CLOTHTEAR_NUMBERED_TEXTURE ""
 #endif
 
 namespace clothtear::app {
@@ -180,7 +184,7 @@ std::string App::openWindow() {
     ImGui_ImplGlfw_InitForOpenGL(window_, false);
     ImGui_ImplOpenGL3_Init("#version 330");
     installCallbacks();
-    loadDefaultTexture();
+    loadBuiltInTexture(false);
     return {};
 }
 
@@ -197,15 +201,16 @@ void App::closeWindow() {
     window_ = nullptr;
 }
 
-void App::loadDefaultTexture() {
-    Result<Image> img = loadImage(CLOTHTEAR_DEFAULT_TEXTURE);
+void App::loadBuiltInTexture(bool numbered) {
+    const char* path = numbered ? CLOTHTEAR_NUMBERED_TEXTURE : CLOTHTEAR_DEFAULT_TEXTURE;
+    Result<Image> img = loadImage(path);
     if (img.ok()) {
         renderer_.setTexture(img.value);
-        state_.textureName = CLOTHTEAR_DEFAULT_TEXTURE;
+        state_.textureName = path;
     } else {
-        // The build writes the PNG; without it, make the same fabric in memory.
-        renderer_.setTexture(makeFabricTexture());
-        state_.textureName = "built-in fabric (generated)";
+        // The build writes the PNGs; without them, make the same texture in memory.
+        renderer_.setTexture(numbered ? makeFabricTexture() : makeWovenTexture());
+        state_.textureName = numbered ? "built-in numbered patches (generated)" : "built-in woven fabric (generated)";
     }
 }
 
@@ -272,14 +277,27 @@ void App::frame(bool last) {
 // ========================================================================================= [REQUESTS]
 
 void App::serveRequests() {
+    // A setup picked keeps the current mesh; a mesh loaded keeps the current setup.
+    const Result<SceneName> current = parseSceneName(state_.scene);
+    const std::string objPath = current.ok() ? current.value.objPath : std::string();
+    const std::string setup = current.ok() ? current.value.setup->name : "curtain";
     if (state_.requestScene >= 0) {
         const auto scenes = allScenes();
         if (state_.requestScene < int(scenes.size())) {
-            const std::string err = loadScene(scenes[state_.requestScene].name, false);
+            const std::string err = loadScene(composeSceneName(scenes[state_.requestScene].name, objPath), false);
             state_.say(err.empty() ? std::string("Scene: ") + scenes[state_.requestScene].description : err);
             if (err.empty()) state_.requestResetView = true;
         }
         state_.requestScene = -1;
+    }
+    if (state_.requestLoadMesh || state_.requestBuiltInMesh) {
+        const std::string path = state_.requestLoadMesh ? std::string(state_.meshPath.data()) : std::string();
+        std::string err = state_.requestLoadMesh && path.empty() ? "no OBJ path given" : "";
+        if (err.empty()) err = loadScene(composeSceneName(setup, path), false);
+        state_.meshError = err.empty() ? std::string() : err + "; keeping the current cloth";
+        if (err.empty()) state_.requestResetView = true;
+        if (err.empty()) state_.say(path.empty() ? setup + " on its built-in mesh" : setup + " on " + path);
+        state_.requestLoadMesh = state_.requestBuiltInMesh = false;
     }
     if (state_.requestDefaults) {
         state_.requestDefaults = false;
@@ -292,15 +310,7 @@ void App::serveRequests() {
     }
     if (state_.requestResetView) {
         state_.requestResetView = false;
-        const Cloth& c = world_.cloth;
-        // Frame the cloth and the balls (the drop scene's ball waits on the ground below the cloth).
-        Vec3 lo = Vec3::Constant(1e30f), hi = Vec3::Constant(-1e30f);
-        for (const Vec3& x : c.x)
-            if (x.allFinite()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-        for (const Ball& b : world_.balls)
-            if (b.x.allFinite()) lo = lo.cwiseMin(b.x - Vec3::Constant(b.radius)), hi = hi.cwiseMax(b.x + Vec3::Constant(b.radius));
-        if (!(lo.x() <= hi.x())) lo = Vec3::Constant(-1.f), hi = Vec3::Constant(1.f);
-        state_.camera.frame(lo, hi);
+        frameWorld(state_.camera, world_);
     }
     if (state_.requestLoadTexture) {
         state_.requestLoadTexture = false;
@@ -314,10 +324,10 @@ void App::serveRequests() {
             state_.textureError = img.error + "; keeping the current texture";
         }
     }
-    if (state_.requestDefaultTexture) {
-        state_.requestDefaultTexture = false;
+    if (state_.requestDefaultTexture || state_.requestNumberedTexture) {
         state_.textureError.clear();
-        loadDefaultTexture();
+        loadBuiltInTexture(state_.requestNumberedTexture);
+        state_.requestDefaultTexture = state_.requestNumberedTexture = false;
     }
 }
 
@@ -367,6 +377,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"step_ms", state_.clock.stepCostMs},
         {"texture", state_.textureName},
         {"texture_error", state_.textureError},
+        {"mesh_error", state_.meshError},
     };
     return r;
 }

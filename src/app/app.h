@@ -29,7 +29,7 @@ private:
     void serveRequests();
     std::string writeScreenshot(const std::string& path);
     nlohmann::json report(double wallSeconds) const;
-    void loadDefaultTexture();
+    void loadBuiltInTexture(bool numbered); // the woven default, or the numbered debug texture
     // app_input.cpp
     void installCallbacks();
     void onRealEvent(InputEvent e);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 
 namespace clothtear::app {
 
@@ -14,6 +15,11 @@ std::string App::loadScene(const std::string& name, bool withOverrides) {
     if (std::string err = clothtear::loadScene(world_, name, withOverrides ? state_.overrides : none); !err.empty())
         return err;
     state_.scene = name;
+    if (const Result<SceneName> parsed = parseSceneName(name); parsed.ok() && !parsed.value.objPath.empty()) {
+        const std::string& path = parsed.value.objPath;
+        std::snprintf(state_.meshPath.data(), state_.meshPath.size(), "%s", path.c_str());
+    }
+    if (const std::string warning = sceneWarnings(world_); !warning.empty()) state_.say("Warning: " + warning);
     state_.drag = DragState{};
     state_.windBlowing = false;
     state_.ballFlags.assign(world_.balls.size(), 0);
@@ -30,7 +36,7 @@ void App::rebuildWorld() {
         state_.say("Rebuild failed: " + err);
         return;
     }
-    if (const SceneDef* scene = findScene(state_.scene)) scene->populate(world_);
+    if (Result<SceneName> scene = parseSceneName(state_.scene); scene.ok()) scene.value.setup->populate(world_);
     state_.ballFlags.assign(world_.balls.size(), 0);
     state_.clock.reset();
     state_.stats.sampleStart = -1;

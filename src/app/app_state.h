@@ -86,15 +86,20 @@ struct AppState {
     std::array<char, 512> texturePath{}; // the path field of the texture loader
     std::string textureName;       // what is loaded now
     std::string textureError;      // shown in red under the loader; the current texture stays
+    std::array<char, 512> meshPath{};    // the path field of the OBJ loader (Mesh section)
+    std::string meshError;               // shown in red under it; the current cloth stays
     std::string message;           // status line shown over the view for a few seconds (errors, screenshots)
     uint64_t messageFrame = 0;     // frame the message was set in
     // ---- requests from the panel and hotkeys, served by the main loop once per frame
-    int requestScene = -1;         // index into allScenes()
+    int requestScene = -1;         // index into allScenes(): that setup, on the current mesh
     bool requestReset = false;     // rebuild the cloth from the current settings
     bool requestDefaults = false;  // back to the scene's default settings
     bool requestResetView = false;
+    bool requestLoadMesh = false;     // the scene's setup on the OBJ of meshPath
+    bool requestBuiltInMesh = false;  // the scene's setup back on its grid or irregular mesh
     bool requestLoadTexture = false;
-    bool requestDefaultTexture = false;
+    bool requestDefaultTexture = false;  // the woven fabric
+    bool requestNumberedTexture = false; // the numbered patches (debug: follow the UVs through a tear)
     bool requestScreenshot = false;
     bool quit = false;
     // ---- counters and stats

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace clothtear::app {
 
@@ -96,6 +97,33 @@ bool rayPlane(const Ray& ray, const Vec3& point, const Vec3& normal, Vec3& hit) 
     if (t < 0.f) return false;
     hit = ray.origin + t * ray.dir;
     return true;
+}
+
+void frameWorld(OrbitCamera& camera, const World& world) {
+    const Cloth& c = world.cloth;
+    std::vector<Vec3> finite;
+    finite.reserve(c.x.size());
+    for (const Vec3& x : c.x)
+        if (x.allFinite()) finite.push_back(x);
+    if (finite.empty()) return camera.frame(Vec3::Constant(-1.f), Vec3::Constant(1.f));
+    // The median point per axis: torn scraps far away do not move it.
+    Vec3 median;
+    for (int a = 0; a < 3; ++a) {
+        std::vector<float> coord(finite.size());
+        for (size_t i = 0; i < finite.size(); ++i) coord[i] = finite[i][a];
+        std::nth_element(coord.begin(), coord.begin() + coord.size() / 2, coord.end());
+        median[a] = coord[coord.size() / 2];
+    }
+    Vec3d restLo = Vec3d::Constant(1e300), restHi = Vec3d::Constant(-1e300);
+    for (const Vec3d& r : c.rest) restLo = restLo.cwiseMin(r), restHi = restHi.cwiseMax(r);
+    const float reach = std::max(0.5f, 0.75f * float((restHi - restLo).norm()));
+    Vec3 lo = Vec3::Constant(1e30f), hi = Vec3::Constant(-1e30f);
+    for (const Vec3& x : finite)
+        if ((x - median).norm() <= reach) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    for (const Ball& b : world.balls)
+        if (b.x.allFinite() && (b.x - median).norm() <= reach + b.radius)
+            lo = lo.cwiseMin(b.x - Vec3::Constant(b.radius)), hi = hi.cwiseMax(b.x + Vec3::Constant(b.radius));
+    camera.frame(lo, hi);
 }
 
 } // namespace clothtear::app

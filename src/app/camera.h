@@ -2,6 +2,7 @@
 // Pure math (Eigen only, no GL), so picking and tool tests run without a window.
 #pragma once
 #include "clothtear/types.h"
+#include "clothtear/world.h"
 
 #include <Eigen/Core>
 
@@ -49,6 +50,12 @@ struct OrbitCamera {
     // Frames an axis-aligned box: target at its centre, distance so that it fills most of the view.
     void frame(const Vec3& boxMin, const Vec3& boxMax);
 };
+
+// Frames the cloth and its torn pieces, and the balls among them (the drop scene's ball on the
+// ground): everything within 0.75 rest diagonals of the cloth's median point. What has flown or fallen
+// further (a ball gone through, a piece falling without ground) is left out, so V never zooms out to
+// a speck.
+void frameWorld(OrbitCamera& camera, const World& world);
 
 // The ray from the eye through window point (px, py) (origin top-left, pixels) of a width x height window.
 Ray rayThroughPixel(const OrbitCamera& camera, float px, float py, float width, float height);

@@ -36,4 +36,9 @@ const ControlHelp kControls[] = {
 
 std::span<const ControlHelp> controlsHelp() { return kControls; }
 
+const char* startHint() {
+    return "Left drag: pull and tear    Right drag: orbit    Wheel: zoom\n"
+           "1-5: tools (4 throws balls)    F1: all controls";
+}
+
 } // namespace clothtear::app

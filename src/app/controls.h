@@ -10,6 +10,8 @@ struct ControlHelp {
 };
 
 std::span<const ControlHelp> controlsHelp();
+// The one-line hint the window shows for its first seconds: the few controls a first run needs.
+const char* startHint();
 
 // GLFW key codes the app binds (values of GLFW_KEY_*; checked against glfw3.h in app.cpp).
 namespace keys {

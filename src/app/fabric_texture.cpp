@@ -1,5 +1,7 @@
-// Procedural fabric: pastel patches in a checker of hues, a twill weave, seams between patches, and the
-// patch number (1 = top-left) printed large with stb_easy_font.
+// The project's cloth textures, procedural.
+//   [WOVEN]     the default: a 2/2 twill check of two colours, every thread shaded
+//   [NUMBERED]  the debug texture: pastel patches in a checker of hues, a twill weave, seams between
+//               patches, and the patch number (1 = top-left) printed large with stb_easy_font
 #include "fabric_texture.h"
 
 #include <algorithm>
@@ -61,6 +63,128 @@ void printText(Image& img, const std::string& text, float cx, float cy, float sc
 }
 
 } // namespace
+
+// ============================================================================================ [WOVEN]
+
+namespace {
+
+// A 32-bit integer hash (lowbias32, C. Wellons): the fixed "random" variation of each thread.
+uint32_t hash32(uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+// A value in [0, 1) for the pair (a, b).
+float hash01(uint32_t a, uint32_t b) { return float(hash32(hash32(a) ^ (b * 0x9e3779b9U)) >> 8) / 16777216.f; }
+
+float smoothstep(float e0, float e1, float x) {
+    const float t = std::clamp((x - e0) / (e1 - e0), 0.f, 1.f);
+    return t * t * (3.f - 2.f * t);
+}
+
+int wrap(int i, int n) { return ((i % n) + n) % n; }
+
+// Slub: the yarn's thickness, so its brightness, drifts slowly along the thread. Value noise with a knot
+// every 2 thread widths, periodic over `period` knots (the texture's height or width in knots).
+float slub(uint32_t thread, float along, int period) {
+    const float t = along * 0.5f, f = std::floor(t);
+    const int k = wrap(int(f), period);
+    const float u = smoothstep(0.f, 1.f, t - f);
+    return hash01(thread, uint32_t(k)) * (1.f - u) + hash01(thread, uint32_t((k + 1) % period)) * u;
+}
+
+struct Weave {
+    int threads = kWovenThreads; // warp threads across = weft threads down, a multiple of kWovenRepeat
+    Rgb colors[2] = {{0.66f, 0.10f, 0.10f},   // deep red
+                     {0.10f, 0.13f, 0.28f}};  // navy
+    std::vector<Rgb> warp, weft;              // each thread's own colour (stripe colour, varied)
+
+    explicit Weave(int n) : threads(n) {
+        for (int pass = 0; pass < 2; ++pass) {
+            std::vector<Rgb>& out = pass == 0 ? warp : weft;
+            for (int i = 0; i < n; ++i) {
+                // Stripes of half a repeat each; the same order in warp and weft makes a square check.
+                const Rgb c = colors[(i % kWovenRepeat) < kWovenRepeat / 2 ? 0 : 1];
+                // Each thread a little lighter or darker and a little off in hue (dye lots differ).
+                const uint32_t id = uint32_t(pass * n + i);
+                const float tone = 0.88f + 0.24f * hash01(id, 7);
+                out.push_back({c.r * tone * (0.96f + 0.08f * hash01(id, 1)), c.g * tone * (0.96f + 0.08f * hash01(id, 2)),
+                               c.b * tone * (0.96f + 0.08f * hash01(id, 3))});
+            }
+        }
+    }
+
+    // The colour at (tu, tv), in thread widths: warp thread i = floor(tu) runs down, weft thread
+    // j = floor(tv) across. 2/2 twill: warp i lies over weft j when (i - j) mod 4 < 2, so every thread
+    // floats over two crossing threads and dives under the next two, and the floats step one thread per
+    // row (the twill diagonal):
+    //
+    //      i:  0 1 2 3                 | = warp on top, - = weft on top
+    //   j=0    | | - -
+    //   j=1    - | | -
+    //   j=2    - - | |
+    //   j=3    | - - |
+    Rgb at(float tu, float tv) const {
+        const int i = wrap(int(std::floor(tu)), threads), j = wrap(int(std::floor(tv)), threads);
+        const float fu = tu - std::floor(tu), fv = tv - std::floor(tv);
+        const int w = wrap(i - j, 4);
+        const bool warpOver = w < 2;
+        // The thread on top: `across` its width in [0, 1], `along` its float in [0, 2] (0 where it comes
+        // up from under the crossing thread, 2 where it dives again).
+        const float across = warpOver ? fu : fv;
+        const float along = warpOver ? float(1 - w) + fv : float(w - 2) + fu;
+        const Rgb top = warpOver ? warp[size_t(i)] : weft[size_t(j)];
+        const Rgb below = warpOver ? weft[size_t(j)] : warp[size_t(i)];
+        const uint32_t id = warpOver ? uint32_t(i) : uint32_t(threads + j);
+
+        // Near the ends of its float the thread bends down under its neighbour: darker and narrower.
+        const float rise = smoothstep(0.f, 0.55f, std::min(along, 2.f - along));
+        const float halfWidth = 0.47f * (0.85f + 0.15f * rise);
+        const float c = (across - 0.5f) / halfWidth;
+        if (std::abs(c) >= 1.f) // the gap between two threads: the crossing thread below, in shadow
+            return {below.r * 0.45f, below.g * 0.45f, below.b * 0.45f};
+        const float round = std::sqrt(1.f - c * c); // a round yarn, lit from the front
+        float shade = (0.6f + 0.4f * round) * (0.72f + 0.28f * rise);
+        // Twist: the plies of the yarn show as faint slanted bands, three per thread width along it.
+        shade *= 0.94f + 0.06f * std::sin(6.2831853f * (3.f * along + 1.2f * across));
+        // Slub along the thread (periodic over the texture: threads / 2 knots).
+        shade *= 0.9f + 0.2f * slub(id, warpOver ? tv : tu, threads / 2);
+        const float sheen = 0.05f * std::pow(round, 6.f) * rise; // a soft highlight on the crown of the yarn
+        return {top.r * shade + sheen, top.g * shade + sheen, top.b * shade + sheen};
+    }
+};
+
+} // namespace
+
+Image makeWovenTexture(int size, int threads) {
+    threads = std::max(kWovenRepeat, (threads + kWovenRepeat / 2) / kWovenRepeat * kWovenRepeat);
+    const Weave weave(threads);
+    Image img;
+    img.width = img.height = size;
+    img.rgba.assign(size_t(size) * size * 4, 255);
+    // 3 x 3 samples a pixel: the thread edges are smooth, and the PNG does not alias at any size.
+    constexpr int kSamples = 3;
+    const float toThreads = float(threads) / float(size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            Rgb sum{0.f, 0.f, 0.f};
+            for (int sy = 0; sy < kSamples; ++sy)
+                for (int sx = 0; sx < kSamples; ++sx) {
+                    const Rgb c = weave.at((float(x) + (float(sx) + 0.5f) / kSamples) * toThreads,
+                                           (float(y) + (float(sy) + 0.5f) / kSamples) * toThreads);
+                    sum = {sum.r + c.r, sum.g + c.g, sum.b + c.b};
+                }
+            constexpr float kInv = 1.f / float(kSamples * kSamples);
+            put(img, x, y, {sum.r * kInv, sum.g * kInv, sum.b * kInv});
+        }
+    return img;
+}
+
+// ========================================================================================= [NUMBERED]
 
 Image makeFabricTexture(int size, int cells) {
     Image img;

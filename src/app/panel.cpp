@@ -15,6 +15,7 @@
 #include "clothtear/scenes.h"
 
 #include <imgui.h>
+#include <algorithm>
 #include <string>
 
 namespace clothtear::app {
@@ -101,6 +102,25 @@ void viewSection(AppState& st) {
     if (ImGui::Button("Reset view (V)")) st.requestResetView = true;
 }
 
+// An OBJ mesh for the current setup (curtain, pull, ball...): scenes compose a mesh with a setup.
+void meshSection(AppState& st) {
+    const Result<SceneName> scene = parseSceneName(st.scene);
+    const bool obj = scene.ok() && !scene.value.objPath.empty();
+    ImGui::TextWrapped("Now: %s", obj ? scene.value.objPath.c_str() : "built-in (Parameters > Cloth > mesh)");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+    const bool enter = ImGui::InputTextWithHint("##meshpath", "path/to/mesh.obj", st.meshPath.data(), st.meshPath.size(),
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    if (ImGui::Button("Load OBJ") || enter) st.requestLoadMesh = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Built-in mesh")) st.requestBuiltInMesh = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the grid or irregular mesh of the parameters");
+    if (!st.meshError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
+        ImGui::TextWrapped("%s", st.meshError.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
 void textureSection(AppState& st) {
     ImGui::TextWrapped("Now: %s", st.textureName.c_str());
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
@@ -110,6 +130,11 @@ void textureSection(AppState& st) {
     if (ImGui::Button("Load") || enter) st.requestLoadTexture = true;
     ImGui::SameLine();
     if (ImGui::Button("Default")) st.requestDefaultTexture = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The woven fabric (assets/woven.png)");
+    // The debug texture on a row of its own: the path field's row above keeps its places.
+    if (ImGui::Button("Numbered (debug)")) st.requestNumberedTexture = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("64 numbered patches (assets/numbered.png): each number stays whole on a torn piece");
     if (!st.textureError.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
         ImGui::TextWrapped("%s", st.textureError.c_str());
@@ -133,9 +158,11 @@ void drawControlPanel(AppState& st, World& world) {
 
     // Scene picker: every scene of the headless runner.
     const auto scenes = allScenes();
-    if (ImGui::BeginCombo("scene", st.scene.c_str())) {
+    const Result<SceneName> current = parseSceneName(st.scene);
+    const char* setup = current.ok() ? current.value.setup->name : st.scene.c_str();
+    if (ImGui::BeginCombo("scene", setup)) {
         for (int i = 0; i < int(scenes.size()); ++i) {
-            if (ImGui::Selectable(scenes[i].name, st.scene == scenes[i].name)) st.requestScene = i;
+            if (ImGui::Selectable(scenes[i].name, std::string_view(setup) == scenes[i].name)) st.requestScene = i;
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", scenes[i].description);
         }
         ImGui::EndCombo();
@@ -171,6 +198,7 @@ void drawControlPanel(AppState& st, World& world) {
 
     if (ImGui::CollapsingHeader("View")) viewSection(st);
     if (ImGui::CollapsingHeader("Texture")) textureSection(st);
+    if (ImGui::CollapsingHeader("Mesh")) meshSection(st);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Checkbox("allow unsafe values", &st.allowUnsafe);
         if (ImGui::IsItemHovered())
@@ -206,31 +234,40 @@ void drawStatsPane(AppState& st, const World& world) {
                           "needs to keep the stiffness you set (a finer or smaller cloth needs more),\n"
                           "up to time.max_substeps.");
     if (world.guardCappedSprings > 0)
-        ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "guard softened %zu springs:\n  k kept %.0f%%, damping %.0f%%",
-                           world.guardCappedSprings, 100.0 * world.guardStiffnessKept, 100.0 * world.guardDampingKept);
+        ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "softer than set, to stay stable:\n  %zu springs at %.0f%% stiffness",
+                           world.guardCappedSprings, 100.0 * world.guardStiffnessKept);
     else
-        ImGui::TextDisabled("material as set: no spring softened");
+        ImGui::TextDisabled("stiffness as you set it");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Where the sub-steps the material needs exceed time.max_substeps, or for the light\n"
                           "particles tearing makes, the guard caps springs so the step stays stable: the\n"
-                          "cloth is softer there than you set (k kept, damping: what the\n"
-                          "most softened spring kept). Raise time.max_substeps to keep it.");
+                          "cloth is softer there than you set (the stiffness the most softened spring kept;\n"
+                          "its damping kept %.0f%%). Raise time.max_substeps to keep it.",
+                          100.0 * world.guardDampingKept);
     // Neutral, not a warning: a cloth being pulled or hit runs out of passes as a matter of course;
     // a cloth at rest or in light wind that does is stretched past the limit (README, known gaps).
-    ImGui::TextDisabled("limit out of passes: %.0f%% of sub-steps", 100.0 * s.limitCappedShare);
+    if (s.limitCappedShare > 0.0)
+        ImGui::TextDisabled("stretch over the limit in %.0f%% of sub-steps", 100.0 * s.limitCappedShare);
+    else
+        ImGui::TextDisabled("stretch kept within the limit");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Sub-steps whose length limit used all its passes (limit.iterations; with\n"
-                          "gauss-seidel up to 4 x the cloth's depth) with springs still over\n"
-                          "limit.max_stretch: the cloth ends them stretched further.");
+        ImGui::SetTooltip("The length limit (limit.max_stretch) pulls over-stretched springs back each\n"
+                          "sub-step in a bounded number of passes (limit.iterations; with gauss-seidel up\n"
+                          "to 4 x the cloth's depth). When they run out, the cloth ends the sub-step\n"
+                          "stretched further: normal while you pull or a ball hits, a solver gap at rest.");
     ImGui::Text("draw %.1f ms   swap %.1f ms", s.drawMs, s.swapMs);
-    if (ImGui::BeginTable("phases", 2, ImGuiTableFlags_SizingStretchProp)) {
-        for (int p = 0; p < int(Phase::Count); ++p) {
-            ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", phaseName(Phase(p)));
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3f ms", s.phaseMs[p]);
+    // Per-phase timings are for engineers: folded, so the pane fits a small window.
+    if (ImGui::TreeNode("time per phase")) {
+        if (ImGui::BeginTable("phases", 2, ImGuiTableFlags_SizingStretchProp)) {
+            for (int p = 0; p < int(Phase::Count); ++p) {
+                ImGui::TableNextColumn();
+                ImGui::TextDisabled("%s", phaseName(Phase(p)));
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f ms", s.phaseMs[p]);
+            }
+            ImGui::EndTable();
         }
-        ImGui::EndTable();
+        ImGui::TreePop();
     }
     ImGui::Separator();
     size_t pinned = 0, weak = 0;
@@ -294,6 +331,28 @@ void drawToolHud(const AppState& st, const World& world, const View& view, float
         dl->AddRectFilled(ImVec2(pos.x - 8.f, pos.y - 4.f), ImVec2(pos.x + size.x + 8.f, pos.y + size.y + 4.f),
                           IM_COL32(20, 20, 28, 200), 4.f);
         dl->AddText(pos, IM_COL32(255, 235, 180, 255), st.message.c_str());
+    }
+    // The controls a first run needs, at the top of the view for ten seconds, fading out.
+    constexpr uint64_t kHintFrames = 600, kHintFade = 120;
+    if (st.frame < kHintFrames && !st.showHelp) {
+        const float alpha = std::min(1.f, float(kHintFrames - st.frame) / float(kHintFade));
+        const ImVec2 size = ImGui::CalcTextSize(startHint());
+        const float left = st.showPanel ? kPanelWidth : 0.f;
+        const float right = view.width - (st.showStats ? kStatsWidth + 8.f : 0.f);
+        const ImVec2 pos(std::max(left + 8.f, 0.5f * (left + right - size.x)), 12.f);
+        dl->AddRectFilled(ImVec2(pos.x - 10.f, pos.y - 6.f), ImVec2(pos.x + size.x + 10.f, pos.y + size.y + 6.f),
+                          IM_COL32(20, 20, 28, int(210 * alpha)), 5.f);
+        // Each line centred on its own.
+        const char* text = startHint();
+        float y = pos.y;
+        for (const char* line = text; *line;) {
+            const char* end = line;
+            while (*end && *end != '\n') ++end;
+            const float w = ImGui::CalcTextSize(line, end).x;
+            dl->AddText(ImVec2(pos.x + 0.5f * (size.x - w), y), IM_COL32(235, 240, 255, int(255 * alpha)), line, end);
+            y += ImGui::GetTextLineHeight();
+            line = *end ? end + 1 : end;
+        }
     }
     const ImU32 wind = IM_COL32(90, 170, 255, 200), impulse = IM_COL32(255, 190, 60, 200);
     if (!overUi && (st.tool == Tool::Wind || st.tool == Tool::Impulse))

@@ -45,6 +45,8 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
     for (double ms : w.profile.ms) totalMs += ms;
     json tears = json::object();
     for (int m = 0; m < int(TearMode::Count); ++m) tears[tearModeName(TearMode(m))] = w.tearLog.counts[m];
+    json warnings = json::array(); // what the user should know that is not an error
+    if (const std::string warning = sceneWarnings(w); !warning.empty()) warnings.push_back(warning);
     json events = json::array();
     for (const TearEvent& e : w.tearLog.events)
         events.push_back({{"mode", tearModeName(e.mode)},
@@ -97,6 +99,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"tears_total", w.tearLog.total()},
         {"pieces", piecesReport(c)},
         {"tear_events", events},
+        {"warnings", warnings},
         {"validation_error", w.tearLog.validationError}, // first invariant violation (tear.validate=1)
         {"balls", balls},
     };
@@ -108,6 +111,8 @@ int runHeadless(const RunOptions& o) {
         std::cerr << "clothtear: " << err << "\n";
         return 2;
     }
+    if (const std::string warning = sceneWarnings(world); !warning.empty())
+        std::cerr << "clothtear: warning: " << warning << "\n";
     const long frames = std::lround(o.seconds / world.settings.time.frameDt);
     const auto start = std::chrono::steady_clock::now();
     for (long f = 0; f < frames; ++f) world.step();

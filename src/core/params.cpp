@@ -73,6 +73,7 @@ const ParamInfo kParams[] = {
 
     CT_B("tear.enabled", tear.enabled, "Tearing (strain scan and topology changes)", false),
     CT_F("tear.threshold", tear.threshold, 0.05, 3, 0.001, 100, "", "Strain at which a spring tears (basic tear)", false),
+    CT_F("tear.seam_strength", tear.seamStrength, 1, 10, 1, 100, "x threshold", "Springs touching a pinned edge (the hem) tear at this multiple of tear.threshold, before any weak point", false),
     CT_F("tear.weak_threshold", tear.weakThreshold, 0.02, 3, 0.001, 100, "", "Strain at which a spring touching a weak point tears", false),
     CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),

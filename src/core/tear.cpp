@@ -274,6 +274,8 @@ bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force, float scanSt
     const TearSettings& T = ctx.settings;
     const float strain = std::max(strainOf(c, s), scanStrain);
     const Index a = c.springs[s].a, b = c.springs[s].b;
+    // A hem holds up to its own threshold, whatever else the spring touches (tearStrainFor).
+    if (!force && ((c.flags[a] | c.flags[b]) & kHem) && strain < hemThreshold(T)) return false;
     for (Index p : {a, b})
         if ((c.flags[p] & kHinge) && (force || strain >= T.onePointThreshold) && onePointSplit(c, p, s, strain, ctx))
             return true;

@@ -55,36 +55,39 @@ void World::applySettings() {
 
 void World::pinByMode(PinMode mode) {
     const size_t n = cloth.particleCount();
-    for (Index p = 0; p < n; ++p) cloth.setPinned(p, false);
+    for (Index p = 0; p < n; ++p) cloth.setPinned(p, false), cloth.flags[p] &= uint8_t(~kHem);
     if (mode == PinMode::None || n == 0) return;
-    double top = -1e300, left = 1e300, right = -1e300;
-    for (const Vec3d& r : cloth.rest) {
-        top = std::max(top, r.y());
-        left = std::min(left, r.x());
-        right = std::max(right, r.x());
-    }
-    const double eps = 1e-6 * std::max(1.0, right - left);
+    // Edges and corners of the mesh's own extent in its plane (a flat OBJ has a top edge too).
+    const MeshFrame f = meshFrame(cloth.rest);
+    const double eps = 1e-6 * std::max(1.0, f.width());
+    // What the pin mode pins is a hem (kHem): stronger than the cloth (tear.seam_strength).
+    auto pin = [&](Index p) {
+        cloth.setPinned(p, true);
+        cloth.flags[p] |= kHem;
+    };
+    auto pinIf = [&](auto&& onEdge) {
+        for (Index p = 0; p < n; ++p)
+            if (onEdge(f.u(cloth.rest[p]), f.v(cloth.rest[p]))) pin(p);
+    };
     if (mode == PinMode::TopEdge) {
-        for (Index p = 0; p < n; ++p)
-            if (cloth.rest[p].y() > top - eps) cloth.setPinned(p, true);
+        pinIf([&](double, double v) { return v > f.maxV - eps; });
     } else if (mode == PinMode::LeftEdge) {
-        for (Index p = 0; p < n; ++p)
-            if (cloth.rest[p].x() < left + eps) cloth.setPinned(p, true);
+        pinIf([&](double u, double) { return u < f.minU + eps; });
     } else if (mode == PinMode::LeftRightEdges) {
-        for (Index p = 0; p < n; ++p)
-            if (cloth.rest[p].x() < left + eps || cloth.rest[p].x() > right - eps) cloth.setPinned(p, true);
+        pinIf([&](double u, double) { return u < f.minU + eps || u > f.maxU - eps; });
     } else if (mode == PinMode::TopCorners) {
         // The particles closest to the two top corners.
         Index best[2] = {0, 0};
         double bestD[2] = {1e300, 1e300};
         for (Index p = 0; p < n; ++p) {
-            const double dl = (cloth.rest[p] - Vec3d(left, top, cloth.rest[p].z())).squaredNorm();
-            const double dr = (cloth.rest[p] - Vec3d(right, top, cloth.rest[p].z())).squaredNorm();
+            const double u = f.u(cloth.rest[p]), v = f.v(cloth.rest[p]);
+            const double dl = (u - f.minU) * (u - f.minU) + (v - f.maxV) * (v - f.maxV);
+            const double dr = (u - f.maxU) * (u - f.maxU) + (v - f.maxV) * (v - f.maxV);
             if (dl < bestD[0]) bestD[0] = dl, best[0] = p;
             if (dr < bestD[1]) bestD[1] = dr, best[1] = p;
         }
-        cloth.setPinned(best[0], true);
-        cloth.setPinned(best[1], true);
+        pin(best[0]);
+        pin(best[1]);
     }
 }
 

@@ -26,7 +26,9 @@ int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) 
 int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtension& extension) {
     CLI::App app{"clothtear: interactive cloth tearing (Onal 2013) and its headless runner"};
     app.add_flag("--headless", o.headless, "Run without a window and print/write a report");
-    app.add_option("--scene", o.scene, "Scene name (see --list-scenes) or obj:PATH");
+    app.add_option("--scene", o.scene, "Scene name (see --list-scenes), obj:PATH or SCENE:obj:PATH");
+    std::string mesh;
+    app.add_option("--mesh", mesh, "Run the scene on the OBJ mesh FILE (the same as --scene SCENE:obj:FILE)");
     app.add_option("--seconds", o.seconds, "Simulated seconds to run (headless)")
         ->check(CLI::Number) // "not a number" before "not in range" for text
         ->check(CLI::Range(0.0, 1e6));
@@ -44,7 +46,8 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
     }
     if (o.listScenes) {
         for (const SceneDef& s : allScenes()) std::cout << s.name << "\t" << s.description << "\n";
-        std::cout << "obj:PATH\tCurtain made from an OBJ file (v, vt, f)\n";
+        std::cout << "obj:PATH\tCurtain made from an OBJ file (v, vt, f)\n"
+                  << "SCENE:obj:PATH\tAny scene above on an OBJ mesh (or --scene SCENE --mesh PATH)\n";
         return 0;
     }
     if (o.listParams) {
@@ -65,6 +68,18 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
         }
         if (!config.value.scene.empty() && !app.count("--scene")) o.scene = config.value.scene;
         o.sets.insert(o.sets.begin(), config.value.assignments.begin(), config.value.assignments.end());
+    }
+    if (!mesh.empty()) {
+        Result<SceneName> scene = parseSceneName(o.scene);
+        if (!scene.ok()) {
+            std::cerr << "clothtear: --scene " << o.scene << ": " << scene.error << "\n";
+            return 2;
+        }
+        o.scene = composeSceneName(scene.value.setup->name, mesh);
+    }
+    if (Result<SceneName> scene = parseSceneName(o.scene); !scene.ok()) {
+        std::cerr << "clothtear: --scene: " << scene.error << "\n";
+        return 2;
     }
     // Check every --set now, so bad input fails before any work with one clear message.
     Settings probe;

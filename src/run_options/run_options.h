@@ -1,6 +1,6 @@
 // Run options: the command line every `clothtear` shares, with or without the window app.
 //
-//   --headless --scene NAME --seconds S --set key=value --config FILE --json FILE
+//   --headless --scene NAME --mesh OBJ --seconds S --set key=value --config FILE --json FILE
 //   --list-scenes --list-params --version --help
 //
 // parseRunOptions reads them with CLI11, answers --help, --version and the lists, folds the config
@@ -21,7 +21,7 @@ namespace clothtear {
 
 struct RunOptions {
     bool headless = false;         // --headless: no window; run, then print or write the report
-    std::string scene = "curtain"; // --scene: a name of --list-scenes or obj:PATH
+    std::string scene = "curtain"; // --scene: a name of --list-scenes, obj:PATH or SCENE:obj:PATH (--mesh)
     double seconds = 5.0;          // --seconds: simulated seconds of a headless run
     std::vector<std::string> sets; // key=value, in order: the --config file's first, then --set
     std::string config;            // --config FILE ("" for none); already folded into scene and sets

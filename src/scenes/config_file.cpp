@@ -62,7 +62,7 @@ Result<ConfigFile> parseConfig(std::string_view text, const std::string& source)
         if (key == "scene") {
             if (value.empty())
                 return fail("scene: empty value");
-            if (!(value.starts_with("obj:") && value.size() > 4) && !findScene(value))
+            if (!parseSceneName(value).ok())
                 return fail("unknown scene '" + shownInMessage(value) + "' (see --list-scenes)");
             config.scene = std::string(value);
             continue;

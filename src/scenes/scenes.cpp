@@ -13,6 +13,12 @@ namespace {
 
 void noPopulate(World&) {}
 
+std::vector<Vec3d> positionsOf(const Cloth& c) {
+    std::vector<Vec3d> x(c.x.size());
+    for (size_t p = 0; p < x.size(); ++p) x[p] = c.x[p].cast<double>();
+    return x;
+}
+
 // ---- cloth core scenes --------------------------------------------------------------------------
 
 void curtainConfig(Settings&) {}
@@ -44,8 +50,9 @@ void dropPopulate(World& w) {
     Ball b;
     b.radius = 0.6f;
     b.mass = 50.f;
-    // The tilt swings the cloth about its top edge towards +z, so its middle is at z = height / 2.
-    b.x = Vec3(0.f, w.settings.collision.groundHeight + b.radius, 0.5f * w.settings.cloth.height);
+    // Under the middle of the cloth as it starts (the tilt has swung it flat towards +z).
+    const Vec3d mid = meshFrame(positionsOf(w.cloth)).centre;
+    b.x = Vec3(float(mid.x()), w.settings.collision.groundHeight + b.radius, float(mid.z()));
     w.balls.push_back(b);
 }
 
@@ -88,15 +95,19 @@ void pullConfig(Settings& s) {
     s.scene.grabRadius = 0.3f; // a hand on a 6 m sheet: the same patch at every resolution (issue 13)
 }
 void pullPopulate(World& w) {
+    // The bottom centre of the mesh in its own plane, and the pull in that plane.
+    const MeshFrame f = meshFrame(w.cloth.rest);
+    const Vec3d bottom = f.at(0.5 * (f.minU + f.maxU), f.minV);
     Index grab = 0;
     double best = 1e300;
     for (Index p = 0; p < w.cloth.particleCount(); ++p) {
-        const double d = (w.cloth.rest[p] - Vec3d(0.0, -0.5 * w.settings.cloth.height, 0.0)).squaredNorm();
+        const double d = (w.cloth.rest[p] - bottom).squaredNorm();
         if (d < best) best = d, grab = p;
     }
-    const float a = w.settings.scene.pullAngle * float(M_PI / 180.0);
+    const double a = w.settings.scene.pullAngle * (M_PI / 180.0);
     const double R = w.settings.scene.grabRadius;
-    Driver d{{}, Vec3(std::sin(a), -std::cos(a), 0.f) * w.settings.scene.pullSpeed};
+    const Vec3d along = std::sin(a) * f.right - std::cos(a) * f.up;
+    Driver d{{}, (along * w.settings.scene.pullSpeed).cast<float>()};
     for (Index p = 0; p < w.cloth.particleCount(); ++p)
         if (p == grab || (w.cloth.rest[p] - w.cloth.rest[grab]).norm() <= R) {
             w.cloth.setPinned(p, true);
@@ -114,26 +125,29 @@ void tensionConfig(Settings& s) {
     s.collision.ground = false;
 }
 void tensionPopulate(World& w) {
+    const MeshFrame f = meshFrame(w.cloth.rest);
+    const double midU = 0.5 * (f.minU + f.maxU), midV = 0.5 * (f.minV + f.maxV);
     Driver left, right;
-    double minX = 1e300, maxX = -1e300;
-    for (const Vec3d& r : w.cloth.rest) minX = std::min(minX, r.x()), maxX = std::max(maxX, r.x());
     for (Index p = 0; p < w.cloth.particleCount(); ++p) {
         if (!w.cloth.pinned(p)) continue;
-        (w.cloth.rest[p].x() < 0.5 * (minX + maxX) ? left : right).particles.push_back(p);
+        (f.u(w.cloth.rest[p]) < midU ? left : right).particles.push_back(p);
     }
-    left.velocity = Vec3(-w.settings.scene.tensionSpeed, 0.f, 0.f);
-    right.velocity = Vec3(w.settings.scene.tensionSpeed, 0.f, 0.f);
+    left.velocity = (-f.right * w.settings.scene.tensionSpeed).cast<float>();
+    right.velocity = (f.right * w.settings.scene.tensionSpeed).cast<float>();
     w.drivers = {left, right};
     if (!w.settings.scene.tensionNotch) return;
-    // Cut the horizontal spring closest to the centre: a basic tear opens a vertical slit.
+    // Cut the spring along the pull (no "up" component) closest to the centre: a basic tear opens a
+    // slit across the pull.
     Index best = kNone;
     double bestD = 1e300;
+    const Vec3d mid = f.at(midU, midV);
     for (Index s = 0; s < w.cloth.springs.size(); ++s) {
         const Spring& sp = w.cloth.springs[s];
         const Vec3d d = w.cloth.rest[sp.b] - w.cloth.rest[sp.a];
-        if (std::abs(d.y()) > 1e-9 * d.norm()) continue;
-        const double dist = (0.5 * (w.cloth.rest[sp.a] + w.cloth.rest[sp.b])).squaredNorm();
-        if (dist < bestD) bestD = dist, best = s;
+        if (std::abs(d.dot(f.up)) > 1e-9 * d.norm()) continue;
+        // Springs equally near (a grid's middle) go to the first: round-off must not pick.
+        const double dist = (0.5 * (w.cloth.rest[sp.a] + w.cloth.rest[sp.b]) - mid).squaredNorm();
+        if (dist < bestD - 1e-9 * d.squaredNorm()) bestD = dist, best = s;
     }
     TearContext ctx{w.settings.tear, 0.0, nullptr};
     if (best != kNone) forceTear(w.cloth, best, ctx);
@@ -147,13 +161,15 @@ void ballConfig(Settings& s, float radius, float speed, float height) {
     s.scene.ballHeight = height;
 }
 void ballPopulate(World& w) {
+    // Thrown at the cloth as it starts, along its normal, ball.height of the way up its middle.
     const SceneParams& sp = w.settings.scene;
+    const MeshFrame f = meshFrame(positionsOf(w.cloth));
+    const Vec3d aim = f.at(0.5 * (f.minU + f.maxU), f.minV + sp.ballHeight * f.height());
     Ball b;
     b.radius = sp.ballRadius;
     b.mass = sp.ballMass;
-    const float y = -0.5f * w.settings.cloth.height + sp.ballHeight * w.settings.cloth.height;
-    b.x = Vec3(0.f, y, b.radius + 0.05f);
-    b.v = Vec3(0.f, 0.f, -sp.ballSpeed);
+    b.x = (aim + (b.radius + 0.05) * f.normal).cast<float>();
+    b.v = (-sp.ballSpeed * f.normal).cast<float>();
     w.balls.push_back(b);
 }
 
@@ -192,25 +208,46 @@ const SceneDef* findScene(std::string_view name) {
     return nullptr;
 }
 
+Result<SceneName> parseSceneName(std::string_view name) {
+    SceneName parsed;
+    std::string_view setup = name;
+    if (name.starts_with("obj:")) {
+        setup = "curtain";
+        parsed.objPath = name.substr(4);
+    } else if (const size_t at = name.find(":obj:"); at != std::string_view::npos) {
+        setup = name.substr(0, at);
+        parsed.objPath = name.substr(at + 5);
+    }
+    if (name.starts_with("obj:") || name.find(":obj:") != std::string_view::npos)
+        if (parsed.objPath.empty()) return {{}, "scene '" + std::string(name) + "': no OBJ path after 'obj:'"};
+    parsed.setup = findScene(setup);
+    if (!parsed.setup) {
+        std::string names;
+        for (const SceneDef& s : kScenes) names += std::string(names.empty() ? "" : ", ") + s.name;
+        return {{}, "unknown scene '" + std::string(setup) + "' (scenes: " + names + ", obj:PATH, SCENE:obj:PATH)"};
+    }
+    return {std::move(parsed), {}};
+}
+
+std::string composeSceneName(std::string_view setup, std::string_view objPath) {
+    if (objPath.empty()) return std::string(setup);
+    return std::string(setup) + ":obj:" + std::string(objPath);
+}
+
 std::string loadScene(World& world, std::string_view name, std::span<const std::string> overrides) {
+    Result<SceneName> parsed = parseSceneName(name);
+    if (!parsed.ok()) return parsed.error;
+    const SceneName& scene = parsed.value;
+    const bool isObj = !scene.objPath.empty();
     Settings settings;
-    const SceneDef* scene = nullptr;
     MeshData objMesh;
-    const bool isObj = name.starts_with("obj:");
     if (isObj) {
-        Result<MeshData> loaded = loadObj(std::string(name.substr(4)));
+        Result<MeshData> loaded = loadObj(scene.objPath);
         if (!loaded.ok()) return loaded.error;
         objMesh = std::move(loaded.value);
-        settings.cloth.mesh = MeshType::Obj;
-    } else {
-        scene = findScene(name);
-        if (!scene) {
-            std::string names;
-            for (const SceneDef& s : kScenes) names += std::string(names.empty() ? "" : ", ") + s.name;
-            return "unknown scene '" + std::string(name) + "' (scenes: " + names + ", obj:PATH)";
-        }
-        scene->configure(settings);
     }
+    scene.setup->configure(settings);
+    if (isObj) settings.cloth.mesh = MeshType::Obj;
     for (const std::string& o : overrides)
         if (std::string err = applyAssignment(settings, o); !err.empty()) return err;
     World next;
@@ -218,10 +255,20 @@ std::string loadScene(World& world, std::string_view name, std::span<const std::
     if (isObj && settings.cloth.mesh != MeshType::Obj) next.settings.cloth.mesh = MeshType::Obj;
     std::string err = isObj ? next.rebuild(objMesh) : next.rebuild();
     // buildCloth calls its input "mesh"; from a file, name the file (non-manifold edges).
-    if (isObj && err.starts_with("mesh: ")) err = std::string(name.substr(4)) + err.substr(4);
+    if (isObj && err.starts_with("mesh: ")) err = scene.objPath + err.substr(4);
     if (!err.empty()) return err;
-    if (scene) scene->populate(next);
+    scene.setup->populate(next);
     world = std::move(next);
+    return {};
+}
+
+std::string sceneWarnings(const World& world) {
+    const Cloth& c = world.cloth;
+    Index pinned = 0;
+    for (Index p = 0; p < c.particleCount(); ++p) pinned += c.pinned(p) ? 1 : 0;
+    if (c.particleCount() > 0 && pinned == c.particleCount())
+        return "every particle is pinned: the cloth cannot move (cloth.pin on this mesh's extent; try "
+               "another cloth.pin)";
     return {};
 }
 

@@ -3,6 +3,8 @@
 // no-display message. Skipped, saying why, only when xvfb-run is not installed.
 #include "image_io.h"
 
+#include "clothtear/mesh.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
@@ -249,20 +251,21 @@ TEST(AppWindow, MissingOrBrokenTextureShowsAnErrorAndKeepsTheTexture) {
         const auto report = readJson(json);
         const std::string error = report["app"]["texture_error"];
         EXPECT_NE(error.find(bad.filename().string()), std::string::npos) << error;
-        EXPECT_NE(report["app"]["texture"].get<std::string>().find("fabric"), std::string::npos)
+        EXPECT_NE(report["app"]["texture"].get<std::string>().find("woven"), std::string::npos)
             << "the current texture stays";
     }
 }
 
 TEST(AppWindow, TextureLoadsFromThePanel) {
     REQUIRE_XVFB();
-    const fs::path script = tempDir() / "tex_ok.txt", json = tempDir() / "tex_ok.json", png = tempDir() / "red.png";
-    const fs::path shot = tempDir() / "red_shot.png";
-    Image red;
-    red.width = red.height = 8;
-    red.rgba.assign(8 * 8 * 4, 0);
-    for (size_t i = 0; i < red.rgba.size(); i += 4) red.rgba[i] = 230, red.rgba[i + 3] = 255;
-    ASSERT_EQ(savePng(png.string(), red), "");
+    // Green: neither built-in texture (red and navy woven, pastel numbered patches) looks like it.
+    const fs::path script = tempDir() / "tex_ok.txt", json = tempDir() / "tex_ok.json", png = tempDir() / "green.png";
+    const fs::path shot = tempDir() / "green_shot.png";
+    Image green;
+    green.width = green.height = 8;
+    green.rgba.assign(8 * 8 * 4, 0);
+    for (size_t i = 0; i < green.rgba.size(); i += 4) green.rgba[i + 1] = 230, green.rgba[i + 3] = 255;
+    ASSERT_EQ(savePng(png.string(), green), "");
     std::ofstream(script) << textureScript(png.string());
     AppRun r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "' --screenshot '" +
                       shot.string() + "'");
@@ -273,5 +276,57 @@ TEST(AppWindow, TextureLoadsFromThePanel) {
     auto img = loadImage(shot.string());
     ASSERT_TRUE(img.ok());
     const uint8_t* px = &img.value.rgba[(size_t(360) * 1280 + 705) * 4];
-    EXPECT_GT(int(px[0]), 2 * int(px[1]) + 20) << "the cloth in the middle is red now";
+    EXPECT_GT(int(px[1]), 2 * int(px[0]) + 20) << "the cloth in the middle is green now";
+}
+
+// The Texture section's buttons: "Numbered (debug)" shows the numbered patches, "Default" the woven
+// fabric again (the texture section opened, then its buttons clicked where the panel draws them).
+TEST(AppWindow, NumberedAndDefaultTexturesFromThePanel) {
+    REQUIRE_XVFB();
+    const fs::path script = tempDir() / "tex_builtin.txt", json = tempDir() / "tex_builtin.json";
+    const std::string open = "0 move 60 248\n1 click left\n";
+    const std::string numbered = "3 move 60 311\n4 click left\n", back = "6 move 326 288\n7 click left\n";
+    for (const auto& [clicks, want] : {std::pair{numbered, "numbered"}, std::pair{numbered + back, "woven"}}) {
+        std::ofstream(script) << open << clicks << "10 end\n";
+        AppRun r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "'");
+        ASSERT_EQ(r.status, 0) << r.output;
+        const auto report = readJson(json);
+        EXPECT_NE(report["app"]["texture"].get<std::string>().find(want), std::string::npos)
+            << report["app"]["texture"] << " after " << clicks;
+        EXPECT_EQ(report["app"]["texture_error"], "");
+    }
+}
+
+// The Mesh section (issue 13, goal 7): an OBJ typed into its field runs the current setup on that
+// mesh; a missing file shows the error in the panel and keeps the cloth. The section opened
+// (header at y 271 with the sections above closed), the field clicked, the path typed, Enter.
+TEST(AppWindow, MeshLoadsFromThePanelIntoTheCurrentSetup) {
+    REQUIRE_XVFB();
+    clothtear::MeshData m = clothtear::makeGridMesh(12, 10, 1.5, 1.2);
+    for (clothtear::Vec3d& p : m.positions) p = clothtear::Vec3d(p.x(), 0.5, -p.y()); // flat, as a modeller exports a plane
+    const fs::path obj = tempDir() / "panel_flat.obj", json = tempDir() / "mesh_panel.json";
+    ASSERT_TRUE(clothtear::saveObj(m, obj.string()));
+    auto meshScript = [](const std::string& path) {
+        std::string s = "0 move 60 271\n1 click left\n3 move 120 311\n4 click left\n";
+        for (unsigned char c : path) s += "6 char " + std::to_string(int(c)) + "\n";
+        return s + "8 key ENTER\n12 end\n";
+    };
+    const fs::path script = tempDir() / "mesh_panel.txt";
+    std::ofstream(script) << meshScript(obj.string());
+    AppRun r = runApp("--scene pull --script '" + script.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    auto report = readJson(json);
+    EXPECT_EQ(report["scene"], "pull:obj:" + obj.string());
+    EXPECT_EQ(report["particles"], 120);
+    EXPECT_LT(report["pinned"].get<int>(), 120) << "the flat mesh hangs from its far edge, not pinned whole";
+    EXPECT_EQ(report["app"]["mesh_error"], "");
+
+    std::ofstream(script) << meshScript((tempDir() / "no_such_mesh.obj").string());
+    r = runApp("--scene pull --script '" + script.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    report = readJson(json);
+    EXPECT_EQ(report["scene"], "pull");
+    EXPECT_NE(report["app"]["mesh_error"].get<std::string>().find("no_such_mesh.obj"), std::string::npos)
+        << report["app"]["mesh_error"];
+    EXPECT_NE(report["app"]["mesh_error"].get<std::string>().find("keeping the current cloth"), std::string::npos);
 }

@@ -18,7 +18,11 @@
 
 namespace clothtear {
 
-Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Vec3& bary) {
+namespace {
+
+// Ericson, Real-Time Collision Detection 5.1.5. A degenerate triangle (a torn sliver squashed flat,
+// two corners on one point) divides 0 by 0 in it: closestPointOnTriangle checks.
+Vec3 closestPointOnTriangleUnchecked(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Vec3& bary) {
     const Vec3 ab = b - a, ac = c - a, ap = p - a;
     const float d1 = ab.dot(ap), d2 = ac.dot(ap);
     if (d1 <= 0.f && d2 <= 0.f) return bary = Vec3(1, 0, 0), a;
@@ -47,6 +51,19 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
     const float v = vb * denom, w = vc * denom;
     bary = Vec3(1 - v - w, v, w);
     return a + ab * v + ac * w;
+}
+
+} // namespace
+
+Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Vec3& bary) {
+    const Vec3 q = closestPointOnTriangleUnchecked(p, a, b, c, bary);
+    if (bary.allFinite()) return q;
+    // Degenerate: the nearest corner (found by the random safe-parameter runs: a NaN position after
+    // the collide phase when an 83 kg ball hit a torn forward-Euler cloth).
+    const float da = (p - a).squaredNorm(), db = (p - b).squaredNorm(), dc = (p - c).squaredNorm();
+    if (da <= db && da <= dc) return bary = Vec3(1, 0, 0), a;
+    if (db <= dc) return bary = Vec3(0, 1, 0), b;
+    return bary = Vec3(0, 0, 1), c;
 }
 
 namespace {

@@ -90,13 +90,17 @@ private:
     bool overLimit(const Spring& s, float len2) const {
         return len2 > sq(s.rest * (underBall(s) ? heldDoneRatio_ : doneRatio_));
     }
-    bool weakEnd(const Spring& s) const { return ((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge)) != 0; }
+    // The ratio at which spring s tears (tearStrainFor): a hem first, then a weak end.
+    float tearRatioOf(const Spring& s) const {
+        const uint8_t f = flags_[s.a] | flags_[s.b];
+        return (f & kHem) ? ctx_.hemRatio : (f & (kWeak | kHinge)) ? ctx_.weakRatio : ctx_.tearRatio;
+    }
     // A tear candidate of this sub-step, left to the tear phase. A spring too short to halve is
     // limited even as a candidate: if its tear fails (no weak-point path, too short for a basic
     // tear) it must not stay overstretched.
     bool exempt(const Spring& s, float len2) const {
         if (len2 < sq(s.rest * minTearRatio_) || s.rest < minSplitRest_) return false;
-        return len2 >= sq(s.rest * (weakEnd(s) ? ctx_.weakRatio : ctx_.tearRatio)) &&
+        return len2 >= sq(s.rest * tearRatioOf(s)) &&
                std::sqrt(len2) / s.rest - 1.f >= exemptStrain_;
     }
 
@@ -169,7 +173,7 @@ void LimitSolve::scan(int t, int nt) {
     scanSprings(arrays, sc.begin, sc.end, scanRatio, state_.packed.data(), [&](size_t e, float len2) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
-        if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * (weakEnd(s) ? ctx_.weakRatio : ctx_.tearRatio)))
+        if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s)))
             found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
         if (ctx_.limiting && overLimit(s, len2)) {
             listed_[i] = 1;

@@ -47,6 +47,7 @@ StepContext makeStepContext(World& w, StepState& state, float dt) {
     c.maxRatio = 1.f + S.limit.maxStretch;
     c.tearRatio = c.tearing ? 1.f + tearStrainFor(S.tear, false) : 1e30f;
     c.weakRatio = c.tearing ? 1.f + tearStrainFor(S.tear, true) : 1e30f;
+    c.hemRatio = c.tearing ? 1.f + tearStrainFor(S.tear, false, true) : 1e30f;
     c.heldRatio = std::max(c.maxRatio, 1.f + S.tear.threshold);
     c.velocityFix = S.time.integrator != Integrator::Verlet;
 

@@ -37,6 +37,7 @@ struct StepContext {
     float heldRatio = 1;  // under a ball: up to the tear threshold (the ball decides, Onal 4.1)
     float tearRatio = 1e30f; // 1 + tear.threshold (1e30 without tearing)
     float weakRatio = 1e30f; // springs touching a weak point or a one-point connection (tearStrainFor)
+    float hemRatio = 1e30f;  // springs touching a hem (tearStrainFor)
     bool velocityFix = true; // inelastic limit fix; off for Verlet, whose moves are velocities
 
     // Air, as the explicit integrators apply it.

@@ -50,7 +50,9 @@ void windKernel(const WindKernelInput& in, size_t begin, size_t end, Acc4* acc) 
     // triangle: 0 for a degenerate triangle.
     auto factor = [&](const WindTriangle& t, float cross2, float crossDotV) {
         const float twiceArea = std::sqrt(cross2);
-        if (!(twiceArea > 0.f)) return 0.f;
+        // Not just > 0: a denormal area's inverse is inf, and 0 x inf is NaN (the random safe
+        // parameter runs: a forward-Euler cloth torn by an 83 kg ball). Nor an inf one.
+        if (!(twiceArea > 1e-20f) || !(twiceArea < 1e30f)) return 0.f;
         const float inv = 1.f / twiceArea;
         const float vn = crossDotV * inv;
         // The corners' masses come from the rest area: a sliver torn to 1e-15 m^2 whose float

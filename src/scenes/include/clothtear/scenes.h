@@ -20,9 +20,23 @@ struct SceneDef {
 std::span<const SceneDef> allScenes();
 const SceneDef* findScene(std::string_view name);
 
-// Loads scene `name` ("obj:PATH" for an OBJ file) into `world`: defaults, then each "key=value" of
+// A scene name: a setup of allScenes() on the grid or irregular mesh of its settings, "obj:PATH" (the
+// curtain setup on an OBJ mesh) or "SETUP:obj:PATH" (any setup on an OBJ mesh: pins, the pull's
+// hand and the ball read the mesh's own frame, meshFrame in mesh.h).
+struct SceneName {
+    const SceneDef* setup = nullptr;
+    std::string objPath; // empty: the mesh of cloth.mesh
+};
+Result<SceneName> parseSceneName(std::string_view name);
+// The name parseSceneName reads back as `setup` on `objPath` (just `setup` when the path is empty).
+std::string composeSceneName(std::string_view setup, std::string_view objPath);
+
+// Loads scene `name` (see SceneName) into `world`: defaults, then each "key=value" of
 // `overrides` in order, then the build. Returns "" or one message saying what was wrong; on error
 // the world is left as it was.
 std::string loadScene(World& world, std::string_view name, std::span<const std::string> overrides = {});
+
+// What a user should know about a loaded scene that is not an error (every particle pinned), or "".
+std::string sceneWarnings(const World& world);
 
 } // namespace clothtear
