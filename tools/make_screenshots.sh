@@ -5,13 +5,23 @@ set -e
 cd "$(dirname "$0")/.."
 app=${1:-build/release/src/app/clothtear}
 dir=assets/screenshots
-shot() { # name scene [extra args]
-    name=$1 scene=$2
-    shift 2
-    xvfb-run -a -s "-screen 0 1280x720x24" "$app" --scene "$scene" --script "$dir/$name.txt" \
+shotWith() { # name script scene [extra args]
+    name=$1 script=$2 scene=$3
+    shift 3
+    xvfb-run -a -s "-screen 0 1280x720x24" "$app" --scene "$scene" --script "$dir/$script.txt" \
         --screenshot "$dir/$name.png" "$@"
 }
+shot() { # name scene [extra args]: the script of the same name
+    name=$1
+    shift
+    shotWith "$name" "$name" "$@"
+}
+shot first curtain
 shot tear curtain
-shot ball curtain --set ball.speed=7
+shot ball curtain
 shot strain curtain
 shot help flag
+# One drag at three resolutions (issue 13: the same gesture, the same kind of rip).
+for n in 40 80 160; do
+    shotWith "drag$n" drag curtain --set cloth.resolution_x=$n --set cloth.resolution_y=$n
+done

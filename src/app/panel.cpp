@@ -247,7 +247,7 @@ void drawStatsPane(AppState& st, const World& world) {
     // Neutral, not a warning: a cloth being pulled or hit runs out of passes as a matter of course;
     // a cloth at rest or in light wind that does is stretched past the limit (README, known gaps).
     if (s.limitCappedShare > 0.0)
-        ImGui::TextDisabled("stretch over the limit in %.0f%% of sub-steps", 100.0 * s.limitCappedShare);
+        ImGui::TextDisabled("stretch over limit: %.0f%% of sub-steps", 100.0 * s.limitCappedShare);
     else
         ImGui::TextDisabled("stretch kept within the limit");
     if (ImGui::IsItemHovered())
