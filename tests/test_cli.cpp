@@ -145,6 +145,22 @@ TEST_F(CliTest, MeshOptionComposesAnObjWithTheSceneAndWarnings) {
     EXPECT_NE(r.err.find("warning: every particle is pinned"), std::string::npos) << r.err;
 }
 
+// --export-obj writes the cloth as it ends (torn) with its UVs; an unwritable path is named, status 2.
+TEST_F(CliTest, ExportObjWritesTheTornCloth) {
+    const fs::path obj = dir / "torn.obj";
+    RunResult r = run("--headless --scene ball-r0.5-v3 --set cloth.resolution_x=20 --set cloth.resolution_y=20 "
+                      "--seconds 1.5 --export-obj '" + obj.string() + "' --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_GT(j["tears_total"].get<int>(), 0);
+    clothtear::Result<clothtear::MeshData> mesh = clothtear::loadObj(obj.string());
+    ASSERT_TRUE(mesh.ok()) << mesh.error;
+    EXPECT_EQ(mesh.value.triangles.size(), j["triangles"].get<size_t>());
+    EXPECT_EQ(mesh.value.positions.size(), j["particles"].get<size_t>());
+    const std::string bad = "--headless --seconds 0.05 --export-obj '" + (dir / "no/such/dir/x.obj").string() + "'";
+    expectRefused(run(bad), bad, {"cannot write the OBJ export", "x.obj"});
+}
+
 // --config: the file's scene and parameters, with --scene and --set on the command line winning.
 TEST_F(CliTest, ConfigFileSetsSceneAndParametersAndTheCommandLineWins) {
     const std::string cfg = write("run.cfg", "# corners, coarse\nscene = corners\ncloth.resolution_x = 10\n"

@@ -94,6 +94,12 @@ constexpr double kMinSplitFraction = 0.125;
 // triangles with a message.
 Result<Cloth> buildCloth(const MeshData& mesh, float density);
 
+// The cloth as a mesh again, torn or not: every particle a vertex (a torn seam's two sides are two
+// vertices), every triangle with its corner UVs. Positions are where the particles are now
+// (`restShape` false: an export of what the user sees) or their rest positions (true: a mesh that
+// builds the same cloth, unstretched). saveObj writes it; loadObj reads it back with the same pieces.
+MeshData clothMesh(const Cloth& cloth, bool restShape = false);
+
 // ---- pure kernels (unit-tested without a world) -------------------------------------------------
 
 // Onal Eq. 1-4: distance between the opposite corners c (of triangle a,b,c) and d (of triangle b,a,d)

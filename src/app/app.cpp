@@ -114,6 +114,10 @@ int App::run(const AppOptions& options) {
         file << formatInputScript(out);
         if (!file) std::cerr << "clothtear: cannot write the input recording to '" << options.record << "'\n", status = 2;
     }
+    if (!options.exportObj.empty() && !saveObj(clothMesh(world_.cloth), options.exportObj)) {
+        std::cerr << "clothtear: cannot write the OBJ export to '" << options.exportObj << "'\n";
+        status = 2;
+    }
     if (!options.json.empty()) {
         const std::string text = report(wall).dump(2);
         if (options.json == "-") {
@@ -259,6 +263,12 @@ void App::frame(bool last) {
     const double drawEnd = glfwGetTime();
     if (last && !options_.screenshot.empty())
         if (std::string err = writeScreenshot(options_.screenshot); !err.empty()) std::cerr << "clothtear: " << err << "\n";
+    if (state_.requestExportObj) {
+        state_.requestExportObj = false;
+        const std::string name = "clothtear-" + std::to_string(state_.frame) + ".obj";
+        state_.say(saveObj(clothMesh(world_.cloth), name) ? "Exported the cloth to " + name
+                                                          : "Cannot write " + name + "; nothing exported");
+    }
     if (state_.requestScreenshot) {
         state_.requestScreenshot = false;
         const std::string name = "clothtear-" + std::to_string(state_.frame) + ".png";

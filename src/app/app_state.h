@@ -101,6 +101,7 @@ struct AppState {
     bool requestDefaultTexture = false;  // the woven fabric
     bool requestNumberedTexture = false; // the numbered patches (debug: follow the UVs through a tear)
     bool requestScreenshot = false;
+    bool requestExportObj = false;  // the cloth as it is, as OBJ with UVs (clothtear-FRAME.obj)
     bool quit = false;
     // ---- counters and stats
     uint64_t frame = 0;            // displayed frames so far

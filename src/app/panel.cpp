@@ -114,6 +114,10 @@ void meshSection(AppState& st) {
     ImGui::SameLine();
     if (ImGui::Button("Built-in mesh")) st.requestBuiltInMesh = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the grid or irregular mesh of the parameters");
+    ImGui::SameLine();
+    if (ImGui::Button("Export OBJ")) st.requestExportObj = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Write the cloth as it is now, torn, with its UVs to clothtear-FRAME.obj");
     if (!st.meshError.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
         ImGui::TextWrapped("%s", st.meshError.c_str());

@@ -118,6 +118,10 @@ int runHeadless(const RunOptions& o) {
     for (long f = 0; f < frames; ++f) world.step();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const nlohmann::json report = makeReport(world, o.scene, wall);
+    if (!o.exportObj.empty() && !saveObj(clothMesh(world.cloth), o.exportObj)) {
+        std::cerr << "clothtear: cannot write the OBJ export to '" << o.exportObj << "'\n";
+        return 2;
+    }
     if (o.json == "-") {
         std::cout << report.dump(2) << "\n";
     } else if (!o.json.empty()) {

@@ -218,4 +218,18 @@ Result<Cloth> buildCloth(const MeshData& mesh, float density) {
     return r;
 }
 
+MeshData clothMesh(const Cloth& cloth, bool restShape) {
+    MeshData m;
+    m.positions.resize(cloth.particleCount());
+    for (Index p = 0; p < cloth.particleCount(); ++p)
+        m.positions[p] = restShape ? cloth.rest[p] : Vec3d(cloth.x[p].cast<double>());
+    m.triangles.reserve(cloth.triangles.size());
+    m.cornerUVs.reserve(cloth.triangles.size());
+    for (const Triangle& t : cloth.triangles) {
+        m.triangles.push_back({t.p[0], t.p[1], t.p[2]});
+        m.cornerUVs.push_back({t.uv[0], t.uv[1], t.uv[2]});
+    }
+    return m;
+}
+
 } // namespace clothtear

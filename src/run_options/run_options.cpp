@@ -35,6 +35,7 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
     app.add_option("--set", o.sets, "Set a parameter: --set key=value (repeatable; see --list-params)");
     app.add_option("--config", o.config, "Read the scene and parameters from FILE ('key = value' lines, # comments)");
     app.add_option("--json", o.json, "Write the JSON report to FILE ('-' for stdout)");
+    app.add_option("--export-obj", o.exportObj, "At the end, write the cloth as it is (torn) to FILE as OBJ with UVs");
     app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");

@@ -1,6 +1,6 @@
 // Run options: the command line every `clothtear` shares, with or without the window app.
 //
-//   --headless --scene NAME --mesh OBJ --seconds S --set key=value --config FILE --json FILE
+//   --headless --scene NAME --mesh OBJ --seconds S --export-obj FILE --set key=value --config FILE --json FILE
 //   --list-scenes --list-params --version --help
 //
 // parseRunOptions reads them with CLI11, answers --help, --version and the lists, folds the config
@@ -26,6 +26,7 @@ struct RunOptions {
     std::vector<std::string> sets; // key=value, in order: the --config file's first, then --set
     std::string config;            // --config FILE ("" for none); already folded into scene and sets
     std::string json;              // report path, "-" for stdout, "" for none
+    std::string exportObj;         // --export-obj FILE: the cloth as it ends, torn, as OBJ with UVs
     bool listScenes = false;
     bool listParams = false;
     bool version = false;
