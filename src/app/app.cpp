@@ -295,7 +295,7 @@ void App::serveRequests() {
         const auto scenes = allScenes();
         if (state_.requestScene < int(scenes.size())) {
             const std::string err = loadScene(composeSceneName(scenes[state_.requestScene].name, objPath), false);
-            state_.say(err.empty() ? std::string("Scene: ") + scenes[state_.requestScene].description : err);
+            state_.say(err.empty() ? withWarnings(std::string("Scene: ") + scenes[state_.requestScene].description) : err);
             if (err.empty()) state_.requestResetView = true;
         }
         state_.requestScene = -1;
@@ -306,7 +306,7 @@ void App::serveRequests() {
         if (err.empty()) err = loadScene(composeSceneName(setup, path), false);
         state_.meshError = err.empty() ? std::string() : err + "; keeping the current cloth";
         if (err.empty()) state_.requestResetView = true;
-        if (err.empty()) state_.say(path.empty() ? setup + " on its built-in mesh" : setup + " on " + path);
+        if (err.empty()) state_.say(withWarnings(path.empty() ? setup + " on its built-in mesh" : setup + " on " + path));
         state_.requestLoadMesh = state_.requestBuiltInMesh = false;
     }
     if (state_.requestDefaults) {

@@ -41,6 +41,8 @@ private:
     View currentView() const;
     // app_sim.cpp
     std::string loadScene(const std::string& name, bool withOverrides);
+    // `message`, with what sceneWarnings says about the world appended (every particle pinned).
+    std::string withWarnings(std::string message) const;
     void rebuildWorld();
     void simulate(double realSeconds);
     void stepOnce();

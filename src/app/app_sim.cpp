@@ -19,7 +19,7 @@ std::string App::loadScene(const std::string& name, bool withOverrides) {
         const std::string& path = parsed.value.objPath;
         std::snprintf(state_.meshPath.data(), state_.meshPath.size(), "%s", path.c_str());
     }
-    if (const std::string warning = sceneWarnings(world_); !warning.empty()) state_.say("Warning: " + warning);
+    state_.say(withWarnings({}));
     state_.drag = DragState{};
     state_.windBlowing = false;
     state_.ballFlags.assign(world_.balls.size(), 0);
@@ -40,7 +40,13 @@ void App::rebuildWorld() {
     state_.ballFlags.assign(world_.balls.size(), 0);
     state_.clock.reset();
     state_.stats.sampleStart = -1;
-    state_.say({});
+    state_.say(withWarnings({})); // a pin mode that pins every particle is worth a word
+}
+
+std::string App::withWarnings(std::string message) const {
+    const std::string warning = sceneWarnings(world_);
+    if (warning.empty()) return message;
+    return message.empty() ? "Warning: " + warning : message + " (warning: " + warning + ")";
 }
 
 void App::simulate(double realSeconds) {
