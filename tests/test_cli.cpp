@@ -158,7 +158,7 @@ TEST_F(CliTest, ExportObjWritesTheTornCloth) {
     EXPECT_EQ(mesh.value.triangles.size(), j["triangles"].get<size_t>());
     EXPECT_EQ(mesh.value.positions.size(), j["particles"].get<size_t>());
     const std::string bad = "--headless --seconds 0.05 --export-obj '" + (dir / "no/such/dir/x.obj").string() + "'";
-    expectRefused(run(bad), bad, {"cannot write the OBJ export", "x.obj"});
+    expectRefused(run(bad), bad, {"--export-obj: cannot write", "x.obj"});
 }
 
 // --config: the file's scene and parameters, with --scene and --set on the command line winning.

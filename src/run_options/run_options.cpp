@@ -6,6 +6,7 @@
 #include "clothtear/scenes.h"
 
 #include <CLI/CLI.hpp>
+#include <fstream>
 #include <iostream>
 
 namespace clothtear {
@@ -77,6 +78,11 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
             return 2;
         }
         o.scene = composeSceneName(scene.value.setup->name, mesh);
+    }
+    // An export that cannot be written is refused before the run, not after it.
+    if (!o.exportObj.empty() && !std::ofstream(o.exportObj, std::ios::app)) {
+        std::cerr << "clothtear: --export-obj: cannot write '" << o.exportObj << "'\n";
+        return 2;
     }
     if (Result<SceneName> scene = parseSceneName(o.scene); !scene.ok()) {
         std::cerr << "clothtear: --scene: " << scene.error << "\n";
