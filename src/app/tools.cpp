@@ -36,12 +36,29 @@ bool beginDrag(World& world, DragState& drag, const View& view, const Vec2& curs
     drag.target = world.cloth.x[p];
     drag.patch.clear();
     if (grabRadius > 0.f) {
-        // Neighbours in rest space (material distance), so a folded layer behind is not picked up.
-        const Vec3d& r0 = world.cloth.rest[p];
-        for (Index q = 0; q < world.cloth.particleCount(); ++q)
-            if (q != p && (world.cloth.rest[q] - r0).squaredNorm() <= double(grabRadius) * grabRadius &&
-                (world.cloth.x[q] - world.cloth.x[p]).norm() <= 2.f * grabRadius)
-                drag.patch.push_back({q, world.cloth.pinned(q), world.cloth.x[q] - world.cloth.x[p]});
+        // The patch: particles joined to p through triangles, within grabRadius of it in rest space
+        // (material distance). A folded layer behind, a torn-off piece or the far side of a tear
+        // next to the hand share rest positions with the patch but not its material: not held.
+        const Cloth& c = world.cloth;
+        const Vec3d& r0 = c.rest[p];
+        const double R2 = double(grabRadius) * grabRadius;
+        std::vector<uint8_t> seen(c.particleCount(), 0);
+        std::vector<Index> front{p};
+        seen[p] = 1;
+        while (!front.empty()) {
+            const Index q = front.back();
+            front.pop_back();
+            for (Index t : c.particleTris[q])
+                for (Index r : c.triangles[t].p) {
+                    if (seen[r] || (c.rest[r] - r0).squaredNorm() > R2) continue;
+                    seen[r] = 1;
+                    front.push_back(r);
+                    if ((c.x[r] - c.x[p]).norm() <= 2.f * grabRadius)
+                        drag.patch.push_back({r, c.pinned(r), c.x[r] - c.x[p]});
+                }
+        }
+        std::sort(drag.patch.begin(), drag.patch.end(),
+                  [](const DragState::Held& a, const DragState::Held& b) { return a.particle < b.particle; });
     }
     // Held by the tool: forces no longer move them, the driver does.
     world.cloth.setPinned(p, true);

@@ -55,6 +55,30 @@ TEST(AppTools, DragFollowsTheCursorAndPullingHardTears) {
     EXPECT_FALSE(w.cloth.pinned(p));
 }
 
+// The hand holds material, not space: two pieces 1 cm apart (a tear's two sides, or a torn-off
+// piece lying by the cloth), grabbed at the edge of one with a hand that spans both: only the
+// grabbed piece is held (issue 14: pick up a piece by any point).
+TEST(AppTools, DragHoldsOnlyThePieceItGrabs) {
+    MeshData left = makeGridMesh(11, 11, 1.0, 1.0), right = left;
+    for (Vec3d& p : left.positions) p.x() -= 0.505;
+    for (Vec3d& p : right.positions) p.x() += 0.505;
+    MeshData both = left;
+    const Index offset = Index(left.positions.size());
+    both.positions.insert(both.positions.end(), right.positions.begin(), right.positions.end());
+    for (auto t : right.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    both.cornerUVs.insert(both.cornerUVs.end(), right.cornerUVs.begin(), right.cornerUVs.end());
+    World w;
+    w.settings.cloth.pin = PinMode::None;
+    ASSERT_EQ(w.rebuild(both), "");
+    const View view = frontView();
+    DragState drag;
+    ASSERT_TRUE(beginDrag(w, drag, view, pixelOf(view, Vec3(-0.03f, 0.f, 0.f)), 0.3f));
+    ASSERT_LT(w.cloth.rest[drag.particle].x(), 0.0) << "the left piece is grabbed";
+    EXPECT_GT(drag.patch.size(), 10u) << "a patch of the left piece";
+    for (const DragState::Held& h : drag.patch)
+        EXPECT_LT(w.cloth.rest[h.particle].x(), 0.0) << "particle " << h.particle << " is on the other piece";
+}
+
 TEST(AppTools, PinKeyKeepsTheGrabbedParticlePinned) {
     World w;
     ASSERT_EQ(loadScene(w, "curtain"), "");
