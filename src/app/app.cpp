@@ -288,25 +288,30 @@ void App::frame(bool last) {
 
 void App::serveRequests() {
     // A setup picked keeps the current mesh; a mesh loaded keeps the current setup.
-    const Result<SceneName> current = parseSceneName(state_.scene);
-    const std::string objPath = current.ok() ? current.value.objPath : std::string();
-    const std::string setup = current.ok() ? current.value.setup->name : "curtain";
+    auto current = [&] {
+        Result<SceneName> parsed = parseSceneName(state_.scene);
+        return parsed.ok() ? parsed.value : SceneName{findScene("curtain"), {}};
+    };
     if (state_.requestScene >= 0) {
         const auto scenes = allScenes();
         if (state_.requestScene < int(scenes.size())) {
-            const std::string err = loadScene(composeSceneName(scenes[state_.requestScene].name, objPath), false);
+            const std::string err =
+                loadScene(composeSceneName(scenes[state_.requestScene].name, current().objPath), false);
             state_.say(err.empty() ? withWarnings(std::string("Scene: ") + scenes[state_.requestScene].description) : err);
             if (err.empty()) state_.requestResetView = true;
         }
         state_.requestScene = -1;
     }
     if (state_.requestLoadMesh || state_.requestBuiltInMesh) {
+        const std::string setup = current().setup->name;
         const std::string path = state_.requestLoadMesh ? std::string(state_.meshPath.data()) : std::string();
         std::string err = state_.requestLoadMesh && path.empty() ? "no OBJ path given" : "";
         if (err.empty()) err = loadScene(composeSceneName(setup, path), false);
         state_.meshError = err.empty() ? std::string() : err + "; keeping the current cloth";
-        if (err.empty()) state_.requestResetView = true;
-        if (err.empty()) state_.say(withWarnings(path.empty() ? setup + " on its built-in mesh" : setup + " on " + path));
+        if (err.empty()) {
+            state_.requestResetView = true;
+            state_.say(withWarnings(path.empty() ? setup + " on its built-in mesh" : setup + " on " + path));
+        }
         state_.requestLoadMesh = state_.requestBuiltInMesh = false;
     }
     if (state_.requestDefaults) {

@@ -102,6 +102,14 @@ void viewSection(AppState& st) {
     if (ImGui::Button("Reset view (V)")) st.requestResetView = true;
 }
 
+// A loader's error, in red under it (nothing when empty).
+void errorText(const std::string& error) {
+    if (error.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
+    ImGui::TextWrapped("%s", error.c_str());
+    ImGui::PopStyleColor();
+}
+
 // An OBJ mesh for the current setup (curtain, pull, ball...): scenes compose a mesh with a setup.
 void meshSection(AppState& st) {
     const Result<SceneName> scene = parseSceneName(st.scene);
@@ -118,11 +126,7 @@ void meshSection(AppState& st) {
     if (ImGui::Button("Export OBJ")) st.requestExportObj = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Write the cloth as it is now, torn, with its UVs to clothtear-FRAME.obj");
-    if (!st.meshError.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
-        ImGui::TextWrapped("%s", st.meshError.c_str());
-        ImGui::PopStyleColor();
-    }
+    errorText(st.meshError);
 }
 
 void textureSection(AppState& st) {
@@ -139,11 +143,7 @@ void textureSection(AppState& st) {
     if (ImGui::Button("Numbered (debug)")) st.requestNumberedTexture = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("64 numbered patches (assets/numbered.png): each number stays whole on a torn piece");
-    if (!st.textureError.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.4f, 0.35f, 1.f));
-        ImGui::TextWrapped("%s", st.textureError.c_str());
-        ImGui::PopStyleColor();
-    }
+    errorText(st.textureError);
 }
 
 } // namespace

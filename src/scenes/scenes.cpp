@@ -211,15 +211,17 @@ const SceneDef* findScene(std::string_view name) {
 Result<SceneName> parseSceneName(std::string_view name) {
     SceneName parsed;
     std::string_view setup = name;
+    bool onObj = true;
     if (name.starts_with("obj:")) {
         setup = "curtain";
         parsed.objPath = name.substr(4);
     } else if (const size_t at = name.find(":obj:"); at != std::string_view::npos) {
         setup = name.substr(0, at);
         parsed.objPath = name.substr(at + 5);
+    } else {
+        onObj = false;
     }
-    if (name.starts_with("obj:") || name.find(":obj:") != std::string_view::npos)
-        if (parsed.objPath.empty()) return {{}, "scene '" + std::string(name) + "': no OBJ path after 'obj:'"};
+    if (onObj && parsed.objPath.empty()) return {{}, "scene '" + std::string(name) + "': no OBJ path after 'obj:'"};
     parsed.setup = findScene(setup);
     if (!parsed.setup) {
         std::string names;
