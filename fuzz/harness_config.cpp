@@ -13,7 +13,8 @@ std::string fuzzConfig(std::string_view bytes) {
     if (!r.ok())
         return checkMessage(r.error, source);
     const ConfigFile& c = r.value;
-    if (!c.scene.empty() && !c.scene.starts_with("obj:") && !findScene(c.scene))
+    // Scene names are those parseSceneName reads: a setup, obj:PATH or SETUP:obj:PATH.
+    if (!c.scene.empty() && !parseSceneName(c.scene).ok())
         return "accepted unknown scene '" + c.scene + "'";
     Settings s;
     for (const std::string& a : c.assignments)
