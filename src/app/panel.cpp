@@ -16,6 +16,7 @@
 
 #include <imgui.h>
 #include <algorithm>
+#include <filesystem>
 #include <string>
 
 namespace clothtear::app {
@@ -110,11 +111,20 @@ void errorText(const std::string& error) {
     ImGui::PopStyleColor();
 }
 
+// "Now: FILE" on one line whatever the path's length (the full path in its tooltip): the buttons
+// below stay where they are on every machine, however deep the install directory.
+void currentFileText(const std::string& path) {
+    const std::string name = std::filesystem::path(path).filename().string();
+    ImGui::Text("Now: %s", name.empty() ? path.c_str() : name.c_str());
+    if (ImGui::IsItemHovered() && name != path) ImGui::SetTooltip("%s", path.c_str());
+}
+
 // An OBJ mesh for the current setup (curtain, pull, ball...): scenes compose a mesh with a setup.
 void meshSection(AppState& st) {
     const Result<SceneName> scene = parseSceneName(st.scene);
     const bool obj = scene.ok() && !scene.value.objPath.empty();
-    ImGui::TextWrapped("Now: %s", obj ? scene.value.objPath.c_str() : "built-in (Parameters > Cloth > mesh)");
+    if (obj) currentFileText(scene.value.objPath);
+    else ImGui::Text("Now: built-in (Parameters > Cloth > mesh)");
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
     const bool enter = ImGui::InputTextWithHint("##meshpath", "path/to/mesh.obj", st.meshPath.data(), st.meshPath.size(),
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
@@ -130,7 +140,7 @@ void meshSection(AppState& st) {
 }
 
 void textureSection(AppState& st) {
-    ImGui::TextWrapped("Now: %s", st.textureName.c_str());
+    currentFileText(st.textureName);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
     const bool enter = ImGui::InputTextWithHint("##texpath", "path/to/image.png or .jpg", st.texturePath.data(),
                                                 st.texturePath.size(), ImGuiInputTextFlags_EnterReturnsTrue);
