@@ -95,7 +95,9 @@ TEST(Pieces, ATornClothExportsAndLoadsBackWithItsPiecesAndTexture) {
         ASSERT_EQ(after.size(), before.size()) << (restShape ? "rest shape" : "current shape");
         for (size_t i = 0; i < after.size(); ++i) EXPECT_EQ(after[i].triangles, before[i].triangles);
         EXPECT_NEAR(back.value.totalUvArea(), uvArea0, 1e-9);
-        if (restShape) EXPECT_NEAR(back.value.totalRestArea(), restArea0, 1e-9);
+        if (restShape) {
+            EXPECT_NEAR(back.value.totalRestArea(), restArea0, 1e-9);
+        }
         // The particles as sets (the import may number them in another order).
         auto sorted = [](std::vector<Vec3d> v) {
             std::sort(v.begin(), v.end(), [](const Vec3d& a, const Vec3d& b) {

@@ -248,6 +248,7 @@ void App::frame(bool last) {
     handleContinuous(lockstep_ ? frameDt : float(realSeconds), uiKeyboard);
     drawControlPanel(state_, world_);
     drawStatsPane(state_, world_);
+    drawTimeline(state_, rewind_);
     drawHelpOverlay(state_);
     serveRequests();
     simulate(realSeconds);
@@ -339,6 +340,19 @@ void App::serveRequests() {
             state_.textureError = img.error + "; keeping the current texture";
         }
     }
+    if (state_.requestUndo || state_.requestRedo) {
+        const bool undo = state_.requestUndo;
+        state_.requestUndo = state_.requestRedo = false;
+        const std::string said = undo ? rewind_.undo(world_) : rewind_.redo(world_);
+        if (said.empty()) state_.say(undo ? "Nothing to undo" : "Nothing to redo");
+        else afterRestore(said);
+    }
+    if (state_.requestView >= 0) {
+        rewind_.view(world_, size_t(state_.requestView));
+        state_.requestView = -1;
+        state_.paused = true; // a frame of the past is shown until P resumes from it
+        afterRestore({});
+    }
     if (state_.requestDefaultTexture || state_.requestNumberedTexture) {
         state_.textureError.clear();
         loadBuiltInTexture(state_.requestNumberedTexture);
@@ -393,6 +407,15 @@ nlohmann::json App::report(double wallSeconds) const {
         {"texture", state_.textureName},
         {"texture_error", state_.textureError},
         {"mesh_error", state_.meshError},
+    };
+    const History& h = rewind_.history();
+    r["app"]["history"] = {
+        {"checkpoints", h.size()},
+        {"seconds", h.size() ? h.at(h.size() - 1).time() - h.at(0).time() : 0.0},
+        {"bytes", h.bytes()},
+        {"undo", rewind_.undoCount()},
+        {"redo", rewind_.redoCount()},
+        {"viewing", rewind_.viewing()},
     };
     return r;
 }

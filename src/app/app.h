@@ -9,6 +9,7 @@
 #include "app_state.h"
 #include "input_state.h"
 #include "renderer.h"
+#include "rewind.h"
 
 #include <nlohmann/json.hpp>
 
@@ -46,12 +47,16 @@ private:
     void rebuildWorld();
     void simulate(double realSeconds);
     void stepOnce();
+    // After an undo, redo or a frame of the timeline restored the world: let go of what the tools
+    // held (their particles may not exist in the restored cloth) and redraw the topology.
+    void afterRestore(const std::string& message);
     void trackBalls();
     void updateStats(double now);
 
     AppOptions options_;
     GLFWwindow* window_ = nullptr;
     World world_;
+    Rewind rewind_; // the timeline and the undo of tears (rewind.h)
     AppState state_;
     Renderer renderer_;
     InputState input_;

@@ -115,15 +115,19 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
             if (e.code == 0) {
                 switch (state_.tool) {
                 case Tool::Drag:
+                    rewind_.gestureStarted(world_, true);
                     if (!beginDrag(world_, state_.drag, view, cursor, world_.settings.scene.grabRadius)) state_.say("Drag: no cloth under the cursor");
                     break;
                 case Tool::Wind:
+                    rewind_.gestureStarted(world_, true);
                     if (!state_.tools.windFixed) state_.windBlowing = true, state_.windSource = windSourceAt(view, cursor);
                     break;
                 case Tool::Impulse:
+                    rewind_.gestureStarted(world_, false);
                     applyScreenImpulse(world_, view, cursor, state_.tools.radiusPx, state_.tools.impulse);
                     break;
                 case Tool::Ball: {
+                    rewind_.gestureStarted(world_, false);
                     const Throw t = throwBall(world_, view, cursor);
                     world_.balls.push_back(t.ball);
                     if (!t.aimed && t.neededSpeed > 0.f)
@@ -155,10 +159,13 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
             if (e.code == 0) {
                 if (state_.drag.active()) releaseDrag(world_, state_.drag, false);
                 state_.windBlowing = false;
+                rewind_.gestureEnded(world_);
             } else if (e.code == 1) {
                 // A right click without dragging reverses the impulse tool (Keserica 5.2.1).
-                if (orbiting_ && !rightDragged_ && state_.tool == Tool::Impulse)
+                if (orbiting_ && !rightDragged_ && state_.tool == Tool::Impulse) {
+                    rewind_.gestureStarted(world_, false);
                     applyScreenImpulse(world_, view, cursor, state_.tools.radiusPx, -state_.tools.impulse);
+                }
                 orbiting_ = false;
             } else {
                 panning_ = false;
@@ -192,11 +199,21 @@ void App::handleKey(int key, bool uiKeyboard) {
         state_.tool = next;
         return;
     }
+    const bool shift = input_.keyHeld(keys::LeftShift) || input_.keyHeld(keys::RightShift);
     switch (key) {
     case keys::Q:
         if (ctrl) state_.quit = true;
         break;
-    case keys::P: state_.paused = !state_.paused; break;
+    case keys::Z:
+        if (ctrl) (shift ? state_.requestRedo : state_.requestUndo) = true;
+        break;
+    case keys::Y:
+        if (ctrl) state_.requestRedo = true;
+        break;
+    case keys::P:
+        state_.paused = !state_.paused;
+        if (!state_.paused) rewind_.resume(); // on from the frame the timeline shows
+        break;
     case keys::N:
         state_.paused = true;
         state_.stepRequests++;

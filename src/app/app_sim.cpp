@@ -25,6 +25,7 @@ std::string App::loadScene(const std::string& name, bool withOverrides) {
     state_.ballFlags.assign(world_.balls.size(), 0);
     state_.clock.reset();
     state_.stats.sampleStart = -1;
+    rewind_.restart(world_);
     return {};
 }
 
@@ -40,6 +41,7 @@ void App::rebuildWorld() {
     state_.ballFlags.assign(world_.balls.size(), 0);
     state_.clock.reset();
     state_.stats.sampleStart = -1;
+    rewind_.restart(world_);
     state_.say(withWarnings({})); // a pin mode that pins every particle is worth a word
 }
 
@@ -80,6 +82,17 @@ void App::stepOnce() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     dragAfterStep(world_, state_.drag, pushed, particlesBefore);
     trackBalls();
+    rewind_.afterStep(world_);
+}
+
+void App::afterRestore(const std::string& message) {
+    state_.drag = DragState{}; // the restored pins are the world's own: nothing to give back
+    state_.windBlowing = false;
+    state_.ballFlags.assign(world_.balls.size(), kBallThrown | kBallTouched);
+    state_.pieces = PiecesSummary{};
+    renderer_.invalidateTopology();
+    state_.clock.reset();
+    if (!message.empty()) state_.say(message);
 }
 
 // A thrown ball "hit the cloth" once any particle came within its radius plus a small margin.

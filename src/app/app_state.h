@@ -102,6 +102,9 @@ struct AppState {
     bool requestNumberedTexture = false; // the numbered patches (debug: follow the UVs through a tear)
     bool requestScreenshot = false;
     bool requestExportObj = false;  // the cloth as it is, as OBJ with UVs (clothtear-FRAME.obj)
+    bool requestUndo = false;       // Ctrl+Z: the last group of tears undone (rewind.h)
+    bool requestRedo = false;       // Ctrl+Shift+Z or Ctrl+Y
+    int requestView = -1;           // the timeline: show this recorded frame (pauses)
     bool quit = false;
     // ---- counters and stats
     uint64_t frame = 0;            // displayed frames so far

@@ -30,6 +30,9 @@ const ControlHelp kControls[] = {
     {"F2", "Hide / show the panel"},
     {"F12", "Save a screenshot (clothtear-FRAME.png)"},
     {"Esc", "Close help, let go of the cloth"},
+    {"Ctrl+Z", "Undo the last tears (a drag, a ball, a gust): the cloth sewn back exactly"},
+    {"Ctrl+Shift+Z or Ctrl+Y", "Redo what was undone"},
+    {"Timeline (bottom)", "Drag to go back in time (pauses); P resumes from the frame shown"},
     {"Ctrl+Q", "Quit"},
 };
 } // namespace

@@ -16,6 +16,7 @@
 
 #include <imgui.h>
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -341,7 +342,7 @@ void drawToolHud(const AppState& st, const World& world, const View& view, float
         const ImVec2 size = ImGui::CalcTextSize(st.message.c_str());
         const float left = st.showPanel ? kPanelWidth : 0.f;
         const float right = view.width - (st.showStats ? kStatsWidth + 8.f : 0.f);
-        const ImVec2 pos(0.5f * (left + right - size.x), view.height - size.y - 14.f);
+        const ImVec2 pos(0.5f * (left + right - size.x), view.height - kTimelineHeight - size.y - 10.f); // above the timeline
         dl->AddRectFilled(ImVec2(pos.x - 8.f, pos.y - 4.f), ImVec2(pos.x + size.x + 8.f, pos.y + size.y + 4.f),
                           IM_COL32(20, 20, 28, 200), 4.f);
         dl->AddText(pos, IM_COL32(255, 235, 180, 255), st.message.c_str());
@@ -389,6 +390,45 @@ void drawToolHud(const AppState& st, const World& world, const View& view, float
             dl->AddCircleFilled(ImVec2(a.x(), a.y()), 4.f, IM_COL32(255, 80, 60, 255));
         }
     }
+}
+
+// A bar between the panel and the stats pane, at the bottom of the window. Dragging the slider shows
+// a recorded frame (the main loop restores it and pauses); P resumes from it.
+void drawTimeline(AppState& st, const Rewind& rewind) {
+    const History& h = rewind.history();
+    if (h.size() == 0) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float left = (st.showPanel ? kPanelWidth : 0.f) + 8.f;
+    const float right = io.DisplaySize.x - (st.showStats ? kStatsWidth + 16.f : 8.f);
+    ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - kTimelineHeight), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::max(320.f, right - left), kTimelineHeight - 8.f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoSavedSettings;
+    ImGui::Begin("##timeline", nullptr, flags);
+    ImGui::BeginDisabled(!rewind.canUndo());
+    if (ImGui::Button("Undo")) st.requestUndo = true;
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Ctrl+Z: the last tears sewn back (%zu to undo)", rewind.undoCount());
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!rewind.canRedo());
+    if (ImGui::Button("Redo")) st.requestRedo = true;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    const bool viewing = rewind.viewing() >= 0;
+    int shown = viewing ? rewind.viewing() : int(h.size()) - 1;
+    char label[48];
+    std::snprintf(label, sizeof label, "t = %.2f s", h.at(size_t(shown)).time());
+    char note[64];
+    if (viewing) std::snprintf(note, sizeof note, "rewound: P resumes here");
+    else std::snprintf(note, sizeof note, "%.1f s kept, %.0f MB", h.at(h.size() - 1).time() - h.at(0).time(), double(h.bytes()) / 1e6);
+    ImGui::SetNextItemWidth(std::max(80.f, ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(note).x - 12.f));
+    if (ImGui::SliderInt("##time", &shown, 0, int(h.size()) - 1, label, ImGuiSliderFlags_AlwaysClamp))
+        st.requestView = shown;
+    ImGui::SameLine();
+    ImGui::TextUnformatted(note);
+    ImGui::End();
 }
 
 } // namespace clothtear::app

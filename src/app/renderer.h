@@ -22,6 +22,9 @@ public:
     // Draws one frame into the current framebuffer of fbWidth x fbHeight pixels.
     void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight);
     size_t topologyUploads() const { return topologyUploads_; }
+    // The cloth was replaced by a restored state whose topology revision may equal the one drawn
+    // (an undo): upload the topology again on the next draw.
+    void invalidateTopology() { mesh_.revision = ~uint64_t(0); }
 
 private:
     void drawGround(const World& world, const RenderOptions& o, const View& view);

@@ -49,6 +49,8 @@ std::string World::rebuild(const MeshData& mesh) {
     return {};
 }
 
+void World::resetStepState() { state_ = StepStateBox{}; }
+
 void World::applySettings() {
     if (cloth.density != settings.material.density) cloth.setDensity(settings.material.density);
 }

@@ -330,3 +330,45 @@ TEST(AppWindow, MeshLoadsFromThePanelIntoTheCurrentSetup) {
         << report["app"]["mesh_error"];
     EXPECT_NE(report["app"]["mesh_error"].get<std::string>().find("keeping the current cloth"), std::string::npos);
 }
+
+// Rewind and undo in the window (issue 14): a ball thrown through the curtain, then Ctrl+Z: the
+// world is exactly the one that never saw the throw (the same state hash as a run without input of
+// as many frames); Ctrl+Shift+Z gives the torn cloth back (the hash of the run that kept it);
+// dragging the timeline's slider shows a frame of the past and pauses.
+TEST(AppWindow, CtrlZUndoesABallsTearsExactlyAndTheTimelineRewinds) {
+    REQUIRE_XVFB();
+    const fs::path script = tempDir() / "undo.txt", json = tempDir() / "undo.json";
+    const std::string throwBall = "0 key 4\n2 move 640 330\n3 click left\n";
+    const std::string undo = "70 key_down LEFT_CONTROL\n71 key Z\n72 key_up LEFT_CONTROL\n";
+    auto run = [&](const std::string& body, const std::string& extra = "") {
+        std::ofstream(script) << body;
+        AppRun r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "'" + extra);
+        EXPECT_EQ(r.status, 0) << r.output;
+        return readJson(json);
+    };
+    // Undo.
+    const auto undone = run(throwBall + undo + "74 end\n");
+    EXPECT_EQ(undone["tears_total"], 0);
+    EXPECT_TRUE(undone["balls"].empty());
+    EXPECT_EQ(undone["app"]["history"]["redo"], 1);
+    std::ofstream(script) << "";
+    AppRun plain = runApp("--scene curtain --frames " + std::to_string(undone["steps"].get<int>()) + " --json '" +
+                          json.string() + "'");
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    EXPECT_EQ(undone["state_hash"], readJson(json)["state_hash"]) << "as if the ball had never been thrown";
+    // Redo.
+    const auto redone = run(throwBall + undo + "73 key_down LEFT_CONTROL\n73 key_down LEFT_SHIFT\n74 key Z\n"
+                            "75 key_up LEFT_SHIFT\n75 key_up LEFT_CONTROL\n77 end\n");
+    EXPECT_GT(redone["tears_total"].get<int>(), 20);
+    const int steps = redone["steps"];
+    const auto kept = run(throwBall + std::to_string(steps - 1) + " end\n");
+    EXPECT_EQ(kept["steps"], steps);
+    EXPECT_EQ(redone["state_hash"], kept["state_hash"]) << "the torn cloth, as the run that kept it";
+    // The timeline: the slider's handle (newest frame, right end of the bar) dragged to the left.
+    const auto rewound = run(throwBall + "60 move 822 695\n61 down left\n62 move 700 695\n64 move 650 695\n"
+                             "65 up left\n75 end\n");
+    EXPECT_TRUE(rewound["app"]["paused"].get<bool>());
+    EXPECT_GE(rewound["app"]["history"]["viewing"].get<int>(), 20);
+    EXPECT_LT(rewound["app"]["history"]["viewing"].get<int>(), 45);
+    EXPECT_LT(rewound["seconds"].get<double>(), 0.75) << "a frame of the past is shown";
+}

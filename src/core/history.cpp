@@ -1,0 +1,337 @@
+// Checkpoints of a World in shared chunks, and the history that keeps them (include/clothtear/history.h).
+//
+// What a checkpoint holds is listed once, in visitState: taking and restoring walk the same list,
+// so a field added there is both kept and put back. Arrays go into chunked sections (shared with the
+// previous checkpoint where equal); everything else is copied by value.
+#include "clothtear/history.h"
+
+#include "step/step_state.h"
+
+#include <algorithm>
+#include <cstring>
+#include <type_traits>
+
+namespace clothtear {
+
+namespace {
+
+using Chunk = std::shared_ptr<const std::vector<std::byte>>;
+
+// One array of the state: its length in bytes and its chunks.
+struct Section {
+    size_t bytes = 0;
+    std::vector<Chunk> chunks;
+};
+
+// Arrays are copied as raw bytes: plain structs and Eigen's fixed-size vectors (no pointers inside).
+template <class T>
+constexpr bool kRawArray = std::is_standard_layout_v<T> && !std::is_pointer_v<T>;
+
+} // namespace
+
+struct CheckpointData {
+    std::vector<Section> sections;     // in visitState's order
+    std::vector<std::byte> values;     // plain values, in visitState's order
+    std::vector<std::string> strings;  // in visitState's order
+    std::vector<Driver> drivers;
+};
+
+namespace {
+
+// Everything a checkpoint keeps, for a const World (taking) or a World (restoring). `Carry` is the
+// step state's part that outlives a sub-step: Verlet's half kicks and the sleep state.
+template <class W, class S, class F>
+void visitState(W& w, S& carry, F& f) {
+    auto& c = w.cloth;
+    f.array(c.x);
+    f.array(c.v);
+    f.array(c.invMass);
+    f.array(c.areaShare);
+    f.array(c.rest);
+    f.array(c.flags);
+    f.nested(c.particleTris);
+    f.array(c.springs);
+    f.array(c.springTopo);
+    f.array(c.bends);
+    f.array(c.bendEdge);
+    f.array(c.triangles);
+    f.value(c.topologyRevision);
+    f.value(c.massRevision);
+    f.value(c.density);
+    f.value(c.minSplitRest);
+    f.value(w.settings);
+    f.array(w.balls);
+    f.drivers(w.drivers);
+    f.value(w.profile);
+    f.array(w.tearLog.events);
+    f.value(w.tearLog.counts);
+    f.value(w.tearLog.maxEvents);
+    f.string(w.tearLog.validationError);
+    f.value(w.time);
+    f.value(w.steps);
+    f.value(w.maxStrain);
+    f.value(w.frameSubsteps);
+    f.value(w.guardCappedSprings);
+    f.value(w.guardStiffnessKept);
+    f.value(w.guardDampingKept);
+    f.value(w.maxSpeed);
+    f.value(w.asleep);
+    f.value(w.sleptFrames);
+    f.value(w.finite);
+    f.string(w.nonFiniteWhere);
+    f.array(w.restMesh.positions);
+    f.array(w.restMesh.triangles);
+    f.array(w.restMesh.cornerUVs);
+    f.value(carry.verletRunning);
+    f.array(carry.verletKick);
+    f.value(carry.sleep.restSince);
+    f.value(carry.sleep.settings);
+    f.value(carry.sleep.topology);
+    f.value(carry.sleep.mass);
+    f.value(carry.sleep.lo);
+    f.value(carry.sleep.hi);
+    f.array(carry.sleep.frameStart);
+}
+
+// Taking: arrays into chunks, each shared with the previous checkpoint's chunk in the same place
+// when the bytes are equal.
+struct Taker {
+    CheckpointData& out;
+    const CheckpointData* previous;
+
+    void bytes(const void* data, size_t n) {
+        const size_t index = out.sections.size();
+        Section& s = out.sections.emplace_back();
+        s.bytes = n;
+        const Section* before = previous && index < previous->sections.size() ? &previous->sections[index] : nullptr;
+        const auto* src = static_cast<const std::byte*>(data);
+        for (size_t at = 0, k = 0; at < n; at += kHistoryChunkBytes, ++k) {
+            const size_t len = std::min(kHistoryChunkBytes, n - at);
+            if (before && k < before->chunks.size()) {
+                const Chunk& old = before->chunks[k];
+                if (old->size() == len && std::memcmp(old->data(), src + at, len) == 0) {
+                    s.chunks.push_back(old);
+                    continue;
+                }
+            }
+            s.chunks.push_back(std::make_shared<const std::vector<std::byte>>(src + at, src + at + len));
+        }
+    }
+    template <class T>
+    void array(const std::vector<T>& v) {
+        static_assert(kRawArray<T>);
+        bytes(v.data(), v.size() * sizeof(T));
+    }
+    // A list of lists as two arrays: the lengths, then the items.
+    void nested(const std::vector<std::vector<Index>>& lists) {
+        std::vector<uint32_t> lengths(lists.size());
+        std::vector<Index> items;
+        for (size_t i = 0; i < lists.size(); ++i) {
+            lengths[i] = uint32_t(lists[i].size());
+            items.insert(items.end(), lists[i].begin(), lists[i].end());
+        }
+        array(lengths);
+        array(items);
+    }
+    template <class T>
+    void value(const T& v) {
+        static_assert(kRawArray<T>);
+        const auto* p = reinterpret_cast<const std::byte*>(&v);
+        out.values.insert(out.values.end(), p, p + sizeof(T));
+    }
+    void string(const std::string& s) { out.strings.push_back(s); }
+    void drivers(const std::vector<Driver>& d) { out.drivers = d; }
+};
+
+// Restoring: the same walk, reading back.
+struct Restorer {
+    const CheckpointData& in;
+    size_t section = 0, valueAt = 0, stringAt = 0;
+
+    template <class T>
+    void array(std::vector<T>& v) {
+        const Section& s = in.sections[section++];
+        v.resize(s.bytes / sizeof(T));
+        auto* dst = reinterpret_cast<std::byte*>(v.data());
+        for (const Chunk& c : s.chunks) dst = std::copy(c->begin(), c->end(), dst);
+    }
+    void nested(std::vector<std::vector<Index>>& lists) {
+        std::vector<uint32_t> lengths;
+        std::vector<Index> items;
+        array(lengths);
+        array(items);
+        lists.resize(lengths.size());
+        size_t at = 0;
+        for (size_t i = 0; i < lengths.size(); ++i) {
+            lists[i].assign(items.begin() + at, items.begin() + at + lengths[i]);
+            at += lengths[i];
+        }
+    }
+    template <class T>
+    void value(T& v) {
+        std::memcpy(reinterpret_cast<std::byte*>(&v), in.values.data() + valueAt, sizeof(T));
+        valueAt += sizeof(T);
+    }
+    void string(std::string& s) { s = in.strings[stringAt++]; }
+    void drivers(std::vector<Driver>& d) { d = in.drivers; }
+};
+
+template <class F>
+void forEachChunk(const CheckpointData& d, F&& f) {
+    for (size_t s = 0; s < d.sections.size(); ++s)
+        for (size_t k = 0; k < d.sections[s].chunks.size(); ++k) f(s, k, d.sections[s].chunks[k]);
+}
+
+bool holds(const CheckpointData* d, size_t s, size_t k, const Chunk& c) {
+    return d && s < d->sections.size() && k < d->sections[s].chunks.size() && d->sections[s].chunks[k] == c;
+}
+
+} // namespace
+
+Checkpoint Checkpoint::take(const World& world, const Checkpoint* previous) {
+    auto data = std::make_shared<CheckpointData>();
+    Taker taker{*data, previous ? previous->data_.get() : nullptr};
+    const StepState& carry = world.stepState();
+    visitState(world, carry, taker);
+    Checkpoint c;
+    c.data_ = std::move(data);
+    return c;
+}
+
+void Checkpoint::restore(World& world) const {
+    world.resetStepState();
+    Restorer restorer{*data_};
+    StepState& carry = world.stepState();
+    visitState(world, carry, restorer);
+}
+
+// The few values the history and the timeline read, found by restoring into a scratch World would
+// be wasteful: read them from the value blob at their offsets, found once by walking a World.
+namespace {
+struct Offsets {
+    size_t time = 0, steps = 0, counts = 0;
+};
+struct OffsetFinder {
+    const World* w;
+    Offsets& o;
+    size_t at = 0;
+    template <class T>
+    void array(const T&) {}
+    void nested(const std::vector<std::vector<Index>>&) {}
+    template <class T>
+    void value(const T& v) {
+        const void* p = &v;
+        if (p == &w->time) o.time = at;
+        if (p == &w->steps) o.steps = at;
+        if (p == &w->tearLog.counts) o.counts = at;
+        at += sizeof(T);
+    }
+    void string(const std::string&) {}
+    void drivers(const std::vector<Driver>&) {}
+};
+const Offsets& offsets() {
+    static const Offsets o = [] {
+        Offsets found;
+        World w;
+        OffsetFinder finder{&w, found};
+        const StepState& carry = w.stepState();
+        visitState(w, carry, finder);
+        return found;
+    }();
+    return o;
+}
+template <class T>
+T valueAt(const CheckpointData& d, size_t offset) {
+    T v;
+    std::memcpy(&v, d.values.data() + offset, sizeof(T));
+    return v;
+}
+} // namespace
+
+double Checkpoint::time() const { return valueAt<double>(*data_, offsets().time); }
+uint64_t Checkpoint::steps() const { return valueAt<uint64_t>(*data_, offsets().steps); }
+uint64_t Checkpoint::tears() const {
+    const auto counts = valueAt<std::array<uint64_t, int(TearMode::Count)>>(*data_, offsets().counts);
+    uint64_t total = 0;
+    for (uint64_t n : counts) total += n;
+    return total;
+}
+
+size_t Checkpoint::bytesNotIn(const Checkpoint* a, const Checkpoint* b) const {
+    if (!data_) return 0;
+    const CheckpointData* da = a ? a->data_.get() : nullptr;
+    const CheckpointData* db = b ? b->data_.get() : nullptr;
+    size_t n = data_->values.size() + sizeof(CheckpointData);
+    for (const std::string& s : data_->strings) n += s.size();
+    for (const Driver& d : data_->drivers) n += d.particles.size() * sizeof(Index) + sizeof(Driver);
+    forEachChunk(*data_, [&](size_t s, size_t k, const Chunk& c) {
+        if (!holds(da, s, k, c) && !holds(db, s, k, c)) n += c->size();
+    });
+    return n;
+}
+
+// ---- History ------------------------------------------------------------------------------------
+
+size_t History::record(const World& world) {
+    if (!entries_.empty() && world.time < entries_.back().checkpoint.time()) clear();
+    const Checkpoint* previous = entries_.empty() ? nullptr : &entries_.back().checkpoint;
+    Entry e{Checkpoint::take(world, previous), false};
+    bytes_ += e.checkpoint.bytesNotIn(previous, nullptr);
+    entries_.push_back(std::move(e));
+    enforceLimits();
+    return entries_.size() - 1;
+}
+
+size_t History::indexAtOrBefore(double t) const {
+    size_t best = 0;
+    for (size_t i = 0; i < entries_.size(); ++i)
+        if (entries_[i].checkpoint.time() <= t) best = i;
+    return best;
+}
+
+void History::truncateAfter(size_t i) {
+    while (entries_.size() > i + 1) drop(entries_.size() - 1);
+}
+
+void History::clear() {
+    entries_.clear();
+    bytes_ = 0;
+}
+
+void History::setLimits(const HistoryLimits& limits) {
+    limits_ = limits;
+    enforceLimits();
+}
+
+// Dropping entry i frees the chunks neither neighbour shares (a chunk is shared only with the
+// checkpoint before it, so the checkpoints holding one chunk are always consecutive).
+void History::drop(size_t i) {
+    const Checkpoint* prev = i > 0 ? &entries_[i - 1].checkpoint : nullptr;
+    const Checkpoint* next = i + 1 < entries_.size() ? &entries_[i + 1].checkpoint : nullptr;
+    bytes_ -= entries_[i].checkpoint.bytesNotIn(prev, next);
+    entries_.erase(entries_.begin() + ptrdiff_t(i));
+}
+
+// Older than `seconds`: gone (kept undo points too: an undo that far back is not offered). Over the
+// byte budget: every other checkpoint older than the dense span goes, oldest first, until under it.
+void History::enforceLimits() {
+    if (entries_.empty()) return;
+    const double newest = entries_.back().checkpoint.time();
+    while (entries_.size() > 1 && newest - entries_.front().checkpoint.time() > limits_.seconds) drop(0);
+    while (bytes_ > limits_.bytes) {
+        bool dropped = false;
+        for (size_t i = 1; i + 1 < entries_.size() && bytes_ > limits_.bytes; ++i) {
+            if (newest - entries_[i].checkpoint.time() <= limits_.denseSeconds) break;
+            if (entries_[i].kept) continue;
+            drop(i); // the entry that moved into i is kept this round: every other one goes
+            dropped = true;
+        }
+        if (!dropped) {
+            // Nothing thinnable left (all dense or kept): the oldest goes.
+            if (entries_.size() <= 1) break;
+            drop(0);
+        }
+    }
+}
+
+} // namespace clothtear
