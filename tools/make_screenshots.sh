@@ -21,6 +21,9 @@ shot tear curtain
 shot ball curtain
 shot strain curtain
 shot help flag
+# Rewind and undo (issue 14): a ball torn through and the timeline dragged back; the same throw undone.
+shot rewind curtain
+shot undo curtain
 # One drag at three resolutions (issue 13: the same gesture, the same kind of rip).
 for n in 40 80 160; do
     shotWith "drag$n" drag curtain --set cloth.resolution_x=$n --set cloth.resolution_y=$n
