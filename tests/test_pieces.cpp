@@ -1,6 +1,7 @@
 // Torn pieces (pieces.h): an untorn cloth is one piece; disjoint parts are pieces with their own
 // areas and masses, which add up to the cloth's.
 #include "clothtear/pieces.h"
+#include "clothtear/tear.h"
 #include "clothtear/scenes.h"
 #include "clothtear/mesh.h"
 #include "clothtear/world.h"
@@ -113,4 +114,63 @@ TEST(Pieces, ATornClothExportsAndLoadsBackWithItsPiecesAndTexture) {
         for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, (a[i] - b[i]).norm());
         EXPECT_LT(worst, 1e-9) << "every particle where it was (OBJ keeps doubles)";
     }
+}
+
+// World::deletePiece (issue 14, goal 5): a grid, an irregular mesh and a scrap, disjoint; the middle
+// piece taken out whole: the others keep exactly their triangles, rest and UV areas (each part's UVs
+// span the unit square) and particles (renumbered), the cloth validates, a driver holding particles
+// of two pieces keeps only the other's, and the world steps on.
+TEST(Pieces, DeletingAPieceLeavesTheOthersWhole) {
+    MeshData mesh;
+    auto append = [&](const MeshData& part, const Vec3d& shift) {
+        const Index base = Index(mesh.positions.size());
+        for (const Vec3d& p : part.positions) mesh.positions.push_back(p + shift);
+        for (const auto& t : part.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        mesh.cornerUVs.insert(mesh.cornerUVs.end(), part.cornerUVs.begin(), part.cornerUVs.end());
+    };
+    append(makeGridMesh(9, 7, 1.0, 0.8), Vec3d(-2, 0, 0));
+    append(makeIrregularMesh(8, 8, 0.7, 0.7, 0.3, 5), Vec3d(0, 0, 0)); // the one deleted
+    append(makeGridMesh(2, 2, 0.1, 0.1), Vec3d(2, 0, 0));
+    World w;
+    w.settings.cloth.pin = PinMode::None;
+    w.settings.collision.ground = false;
+    ASSERT_EQ(w.rebuild(mesh), "");
+    std::vector<Piece> pieces = findPieces(w.cloth);
+    ASSERT_EQ(pieces.size(), 3u);
+    const Piece big = pieces[0], middle = pieces[1], scrap = pieces[2];
+    EXPECT_NEAR(middle.restArea, 0.49, 1e-9);
+    EXPECT_EQ(middle.particles, 64u);
+    const size_t particles = w.cloth.particleCount(), triangles = w.cloth.triangles.size();
+    const double area = w.cloth.totalRestArea(), uv = w.cloth.totalUvArea();
+    Driver d;
+    d.particles = {w.cloth.triangles[middle.firstTriangle].p[0], w.cloth.triangles[scrap.firstTriangle].p[2]};
+    const Vec3d scrapRest = w.cloth.rest[d.particles[1]];
+    w.drivers.push_back(d);
+
+    EXPECT_EQ(w.deletePiece(middle.firstTriangle), middle.triangles);
+    EXPECT_EQ(validateCloth(w.cloth), "");
+    EXPECT_EQ(w.cloth.particleCount(), particles - 64);
+    EXPECT_EQ(w.cloth.triangles.size(), triangles - middle.triangles);
+    EXPECT_NEAR(w.cloth.totalRestArea(), area - 0.49, 1e-12);
+    EXPECT_NEAR(w.cloth.totalUvArea(), uv - 1.0, 1e-12) << "the middle part's whole unit square of texture";
+    pieces = findPieces(w.cloth);
+    ASSERT_EQ(pieces.size(), 2u);
+    EXPECT_EQ(pieces[0].triangles, big.triangles);
+    EXPECT_DOUBLE_EQ(pieces[0].restArea, big.restArea);
+    EXPECT_EQ(pieces[1].particles, scrap.particles);
+    ASSERT_EQ(w.drivers.size(), 1u);
+    ASSERT_EQ(w.drivers[0].particles.size(), 1u) << "the deleted piece's particle is let go";
+    EXPECT_EQ(w.cloth.rest[w.drivers[0].particles[0]], scrapRest) << "the scrap's, renumbered, is the same particle";
+    EXPECT_EQ(w.deletePiece(Index(w.cloth.triangles.size())), 0u) << "no such triangle: nothing happens";
+    for (int f = 0; f < 10; ++f) w.step();
+    EXPECT_TRUE(w.finite);
+    EXPECT_EQ(validateCloth(w.cloth), "");
+    // The last piece can go too: an empty cloth steps.
+    w.drivers.clear();
+    w.deletePiece(0);
+    w.deletePiece(0);
+    EXPECT_EQ(w.cloth.triangles.size(), 0u);
+    EXPECT_EQ(w.cloth.particleCount(), 0u);
+    w.step();
+    EXPECT_TRUE(w.finite);
 }

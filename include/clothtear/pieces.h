@@ -13,6 +13,7 @@ struct Piece {
     size_t particles = 0;
     double restArea = 0; // m^2: the rest area of its triangles
     double mass = 0;     // kg: density x rest area
+    Index firstTriangle = kNone; // its lowest-numbered triangle (World::deletePiece takes it)
 };
 
 // The pieces of `cloth`, largest rest area first (ties: fewer triangles first, then the order in

@@ -132,6 +132,12 @@ public:
     // One-shot velocity change dv (m/s) along `direction` on the particles within `radius` of `center`.
     int applyImpulse(const Vec3& center, float radius, const Vec3& direction, float dv);
 
+    // Takes the piece holding `triangle` (pieces.h: triangles joined through shared particles) out
+    // of the cloth: its particles, springs and triangles go and the rest is renumbered in order
+    // (the drivers' particles too). Between frames only; whoever holds a particle index lets go
+    // first. Returns the triangles removed (0: no such triangle).
+    size_t deletePiece(Index triangle);
+
     double kineticEnergy() const;
     double potentialEnergy() const; // gravity + springs
 

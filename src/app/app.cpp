@@ -347,6 +347,13 @@ void App::serveRequests() {
         if (said.empty()) state_.say(undo ? "Nothing to undo" : "Nothing to redo");
         else afterRestore(said);
     }
+    if (state_.requestDeletePiece >= 0) {
+        if (state_.drag.active()) releaseDrag(world_, state_.drag, false); // its particles are renumbered
+        rewind_.beforeEdit(world_, "the deletion of a piece");
+        const size_t removed = world_.deletePiece(Index(state_.requestDeletePiece));
+        state_.requestDeletePiece = -1;
+        state_.say("Deleted a piece of " + std::to_string(removed) + " triangles (Ctrl+Z brings it back)");
+    }
     if (state_.requestView >= 0) {
         rewind_.view(world_, size_t(state_.requestView));
         state_.requestView = -1;

@@ -6,6 +6,8 @@
 #include "sim_clock.h"
 #include "tools.h"
 
+#include "clothtear/pieces.h"
+
 #include <array>
 #include <string>
 #include <vector>
@@ -56,8 +58,7 @@ inline constexpr uint8_t kBallThrown = 1, kBallTouched = 2;
 // masses change (a tear, a pin, a rebuild: massRevision is unique per build).
 struct PiecesSummary {
     uint64_t topology = ~0ull, mass = ~0ull;
-    size_t count = 0;
-    double smallestArea = 0; // m^2
+    std::vector<Piece> list; // largest first
 };
 
 struct AppState {
@@ -105,6 +106,7 @@ struct AppState {
     bool requestUndo = false;       // Ctrl+Z: the last group of tears undone (rewind.h)
     bool requestRedo = false;       // Ctrl+Shift+Z or Ctrl+Y
     int requestView = -1;           // the timeline: show this recorded frame (pauses)
+    int64_t requestDeletePiece = -1; // the stats pane's Delete: the piece holding this triangle
     bool quit = false;
     // ---- counters and stats
     uint64_t frame = 0;            // displayed frames so far

@@ -226,6 +226,31 @@ void drawControlPanel(AppState& st, World& world) {
 
 // ============================================================================================ [STATS]
 
+namespace {
+
+// The torn pieces: how many and the smallest; opened, each with its area, mass and a Delete button
+// (the main loop takes the piece out; Ctrl+Z brings it back).
+void piecesList(AppState& st, const std::vector<Piece>& pieces) {
+    if (pieces.size() <= 1) {
+        ImGui::Text("pieces %zu", pieces.size());
+        return;
+    }
+    if (!ImGui::TreeNode("pieces", "pieces %zu (smallest %.3g m^2)", pieces.size(), pieces.back().restArea)) return;
+    constexpr size_t kShown = 12;
+    for (size_t k = 0; k < pieces.size() && k < kShown; ++k) {
+        const Piece& p = pieces[k];
+        ImGui::PushID(int(k));
+        if (ImGui::SmallButton("Delete")) st.requestDeletePiece = int64_t(p.firstTriangle);
+        ImGui::SameLine();
+        ImGui::Text("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
+        ImGui::PopID();
+    }
+    if (pieces.size() > kShown) ImGui::TextDisabled("... %zu smaller", pieces.size() - kShown);
+    ImGui::TreePop();
+}
+
+} // namespace
+
 void drawStatsPane(AppState& st, const World& world) {
     if (!st.showStats) return;
     const ImGuiIO& io = ImGui::GetIO();
@@ -293,12 +318,9 @@ void drawStatsPane(AppState& st, const World& world) {
     ImGui::Text("tears: basic %llu  weak %llu  one-point %llu", (unsigned long long)world.tearLog.counts[0],
                 (unsigned long long)world.tearLog.counts[1], (unsigned long long)world.tearLog.counts[2]);
     PiecesSummary& ps = st.pieces;
-    if (ps.topology != c.topologyRevision || ps.mass != c.massRevision) {
-        const std::vector<Piece> pieces = findPieces(c);
-        ps = {c.topologyRevision, c.massRevision, pieces.size(), pieces.empty() ? 0.0 : pieces.back().restArea};
-    }
-    if (ps.count > 1) ImGui::Text("pieces %zu (smallest %.3g m^2)", ps.count, ps.smallestArea);
-    else ImGui::Text("pieces %zu", ps.count);
+    if (ps.topology != c.topologyRevision || ps.mass != c.massRevision)
+        ps = {c.topologyRevision, c.massRevision, findPieces(c)};
+    piecesList(st, ps.list);
     const double ke = world.kineticEnergy(), pe = world.potentialEnergy();
     ImGui::Text("energy: kinetic %.3g J, potential %.3g J", ke, pe);
     ImGui::Text("max strain %.3f (tears at %.2f)", world.maxStrain, world.settings.tear.threshold);

@@ -23,7 +23,7 @@ void Rewind::afterStep(const World& world) {
     const uint64_t tears = world.tearLog.total();
     if (tears > lastTears_) {
         if (!groupOpen_) {
-            Group g{gestureLive_ ? gestureStart_ : before, 0};
+            Group g{gestureLive_ ? gestureStart_ : before, 0, {}};
             if (g.before.empty()) g.before = history_.at(0); // no frame before this one was recorded
             g.tearsBefore = g.before.tears();
             undo_.push_back(std::move(g));
@@ -70,6 +70,16 @@ void Rewind::jumpTo(World& world, const Checkpoint& c) {
     viewing_ = -1;
 }
 
+void Rewind::beforeEdit(const World& world, const std::string& what) {
+    if (viewing_ >= 0) resume();
+    closeGroup();
+    gestureLive_ = false;
+    const Checkpoint* newest = history_.size() ? &history_.at(history_.size() - 1) : nullptr;
+    undo_.push_back(Group{Checkpoint::take(world, newest), world.tearLog.total(), what});
+    if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
+    redo_.clear();
+}
+
 std::string Rewind::undo(World& world) {
     if (viewing_ >= 0) resume();
     if (undo_.empty()) return {};
@@ -78,7 +88,8 @@ std::string Rewind::undo(World& world) {
     const uint64_t undone = world.tearLog.total() - g.tearsBefore;
     redo_.push_back(Checkpoint::take(world, history_.size() ? &history_.at(history_.size() - 1) : nullptr));
     jumpTo(world, g.before);
-    return "Undid " + std::to_string(undone) + (undone == 1 ? " tear" : " tears") + " (Ctrl+Shift+Z redoes)";
+    const std::string what = g.what.empty() ? std::to_string(undone) + (undone == 1 ? " tear" : " tears") : g.what;
+    return "Undid " + what + " (Ctrl+Shift+Z redoes)";
 }
 
 std::string Rewind::redo(World& world) {
@@ -86,7 +97,7 @@ std::string Rewind::redo(World& world) {
     if (redo_.empty()) return {};
     const Checkpoint c = redo_.back();
     redo_.pop_back();
-    Group back{Checkpoint::take(world, history_.size() ? &history_.at(history_.size() - 1) : nullptr), 0};
+    Group back{Checkpoint::take(world, history_.size() ? &history_.at(history_.size() - 1) : nullptr), 0, {}};
     back.tearsBefore = world.tearLog.total();
     undo_.push_back(std::move(back));
     const uint64_t redone = c.tears() - world.tearLog.total();

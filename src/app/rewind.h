@@ -36,6 +36,10 @@ public:
     void gestureStarted(const World& world, bool held);
     void gestureEnded(const World& world);
 
+    // An edit that is not a tear but is undone like one (a piece deleted): call before it, with
+    // what it is ("the deletion of a piece") for the undo's message.
+    void beforeEdit(const World& world, const std::string& what);
+
     bool canUndo() const { return !undo_.empty(); }
     bool canRedo() const { return !redo_.empty(); }
     // Restore the state before the last group of tears / the state the last undo left. Return a
@@ -58,6 +62,7 @@ private:
     struct Group {
         Checkpoint before;  // the undo point
         uint64_t tearsBefore = 0;
+        std::string what;   // an edit's name; empty: a group of tears
     };
     void closeGroup() { groupOpen_ = false; }
     void jumpTo(World& world, const Checkpoint& c);

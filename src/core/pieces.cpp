@@ -35,7 +35,7 @@ std::vector<Piece> findPieces(const Cloth& cloth) {
         const Index r = findRoot(parent, t.p[0]);
         if (pieceOf[r] < 0) {
             pieceOf[r] = int64_t(pieces.size());
-            pieces.emplace_back();
+            pieces.emplace_back().firstTriangle = Index(i);
         }
         Piece& piece = pieces[size_t(pieceOf[r])];
         piece.triangles++;

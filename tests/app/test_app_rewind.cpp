@@ -3,6 +3,7 @@
 // tears with no gesture group by pauses, and the timeline resumes from a frame of the past.
 #include "rewind.h"
 
+#include "clothtear/pieces.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/tear.h"
@@ -159,4 +160,27 @@ TEST(AppRewind, NothingToUndoOrRedoSaysNothingAndChangesNothing) {
     EXPECT_EQ(rewind.undo(w), "");
     EXPECT_EQ(rewind.redo(w), "");
     EXPECT_EQ(stateHash(w), h);
+}
+
+// A piece deleted from the stats pane (World::deletePiece) comes back whole with Ctrl+Z, as the
+// app does it: beforeEdit, then the deletion.
+TEST(AppRewind, ADeletedPieceComesBackWithUndo) {
+    World w = curtain(24);
+    Rewind rewind;
+    rewind.restart(w);
+    rewind.gestureStarted(w, false);
+    w.balls.push_back(throughTheMiddle());
+    for (int f = 0; f < 60; ++f) w.step(), rewind.afterStep(w);
+    std::vector<Piece> pieces = findPieces(w.cloth);
+    ASSERT_GE(pieces.size(), 2u) << "the ball is meant to tear a piece out";
+    const uint64_t before = stateHash(w);
+    const size_t particles = w.cloth.particleCount();
+    rewind.beforeEdit(w, "the deletion of a piece");
+    EXPECT_EQ(w.deletePiece(pieces[1].firstTriangle), pieces[1].triangles);
+    EXPECT_EQ(findPieces(w.cloth).size(), pieces.size() - 1);
+    for (int f = 0; f < 5; ++f) w.step(), rewind.afterStep(w);
+    EXPECT_EQ(rewind.undo(w), "Undid the deletion of a piece (Ctrl+Shift+Z redoes)");
+    EXPECT_EQ(hashHex(stateHash(w)), hashHex(before));
+    EXPECT_EQ(w.cloth.particleCount(), particles);
+    EXPECT_EQ(findPieces(w.cloth).size(), pieces.size());
 }
