@@ -23,6 +23,14 @@ World loadOrFail(const std::string& scene, const std::vector<std::string>& sets)
     return w;
 }
 
+// Adds `part`, moved by `shift`, to `mesh` as a disjoint part.
+void appendPart(MeshData& mesh, const MeshData& part, const Vec3d& shift) {
+    const Index base = Index(mesh.positions.size());
+    for (const Vec3d& p : part.positions) mesh.positions.push_back(p + shift);
+    for (const auto& t : part.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    mesh.cornerUVs.insert(mesh.cornerUVs.end(), part.cornerUVs.begin(), part.cornerUVs.end());
+}
+
 } // namespace
 
 TEST(Pieces, AnUntornClothIsOnePieceWithAllItsAreaAndMass) {
@@ -42,12 +50,7 @@ TEST(Pieces, AnUntornClothIsOnePieceWithAllItsAreaAndMass) {
 // masses (density x area); they add up to the cloth's.
 TEST(Pieces, ThreeDisjointPartsAreThreePiecesLargestFirst) {
     MeshData mesh;
-    auto append = [&](const MeshData& part, const Vec3d& shift) {
-        const Index base = Index(mesh.positions.size());
-        for (const Vec3d& p : part.positions) mesh.positions.push_back(p + shift);
-        for (const auto& t : part.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-        mesh.cornerUVs.insert(mesh.cornerUVs.end(), part.cornerUVs.begin(), part.cornerUVs.end());
-    };
+    auto append = [&](const MeshData& part, const Vec3d& shift) { appendPart(mesh, part, shift); };
     append(makeGridMesh(3, 3, 0.5, 0.5), Vec3d(2, 0, 0)); // listed first: the order is by area, not input
     append(makeGridMesh(5, 5, 1.0, 1.0), Vec3d(-2, 0, 0));
     MeshData scrap;
@@ -122,12 +125,7 @@ TEST(Pieces, ATornClothExportsAndLoadsBackWithItsPiecesAndTexture) {
 // of two pieces keeps only the other's, and the world steps on.
 TEST(Pieces, DeletingAPieceLeavesTheOthersWhole) {
     MeshData mesh;
-    auto append = [&](const MeshData& part, const Vec3d& shift) {
-        const Index base = Index(mesh.positions.size());
-        for (const Vec3d& p : part.positions) mesh.positions.push_back(p + shift);
-        for (const auto& t : part.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-        mesh.cornerUVs.insert(mesh.cornerUVs.end(), part.cornerUVs.begin(), part.cornerUVs.end());
-    };
+    auto append = [&](const MeshData& part, const Vec3d& shift) { appendPart(mesh, part, shift); };
     append(makeGridMesh(9, 7, 1.0, 0.8), Vec3d(-2, 0, 0));
     append(makeIrregularMesh(8, 8, 0.7, 0.7, 0.3, 5), Vec3d(0, 0, 0)); // the one deleted
     append(makeGridMesh(2, 2, 0.1, 0.1), Vec3d(2, 0, 0));
