@@ -145,7 +145,7 @@ public:
 
     // The step's internals (src/core/step/): only the core can use them (the type is incomplete here).
     const StepState& stepState() const { return *state_; }
-    StepState& stepState() { return *state_; }
+    StepState& stepState() { return *state_; } // world files restore it (world_file_read.cpp)
     // The step's caches and work arrays start empty, as in a freshly built World (a restored
     // checkpoint or a loaded file: every cache is rebuilt from the state). The integrator's and
     // sleep's state are cleared too: whoever calls this puts them back.

@@ -18,23 +18,19 @@
 // numbers stay) and provides the polygon list. Positions and UVs are taken from the scan.
 #include "clothtear/cloth.h" // triangleArea
 #include "clothtear/mesh.h"
+#include "file_read.h"
 
 #include <tiny_obj_loader.h> // implementation comes from the Debian shared library
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 namespace clothtear {
@@ -507,31 +503,6 @@ std::string assemble(const std::string& path, const Scan& scan, MeshData& mesh) 
     return {};
 }
 
-std::string readWholeFile(const std::string& path, std::string& text) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (ec || !fs::exists(status))
-        return path + ": cannot open: " + (ec ? ec.message() : std::string("No such file or directory"));
-    if (fs::is_directory(status))
-        return path + ": cannot read: is a directory, not an OBJ file";
-    if (!fs::is_regular_file(status))
-        return path + ": cannot read: not a regular file";
-    // Refused before reading: the text, its sanitized copy and tinyobjloader's arrays together take
-    // several times the file size.
-    if (const uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxObjBytes)
-        return path + ": file is " + std::to_string(size >> 20) + " MiB; the importer reads at most " +
-               std::to_string(kMaxObjBytes >> 20) + " MiB (a cloth of about 850 x 850 particles)";
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return path + ": cannot open: " + (errno ? std::strerror(errno) : "unknown error");
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad())
-        return path + ": read error";
-    return {};
-}
-
 // ---- saveObj helpers ----------------------------------------------------------------------------
 
 // %.17g without the C locale's say in the decimal point: exact round trip of every double.
@@ -572,7 +543,10 @@ Result<MeshData> parseObj(std::string_view text, const std::string& source) {
 Result<MeshData> loadObj(const std::string& path) {
     std::string text;
     try {
-        if (std::string err = readWholeFile(path, text); !err.empty())
+        const FileLimits limits{kMaxObjBytes, "an OBJ file",
+                                "the importer reads at most " + std::to_string(kMaxObjBytes >> 20) +
+                                    " MiB (a cloth of about 850 x 850 particles)"};
+        if (std::string err = readWholeFile(path, text, limits); !err.empty())
             return Result<MeshData>::failure(err);
     } catch (const std::bad_alloc&) {
         return Result<MeshData>::failure(path + ": out of memory while reading");

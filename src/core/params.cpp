@@ -241,6 +241,9 @@ std::string formatParamValue(const Settings& s, const ParamInfo& p) {
         const int i = field<int32_t>(s, p);
         return (i >= 0 && i < enumCount(p)) ? p.enumNames[i] : std::to_string(i);
     }
+    // All the digits of an integer: fmtDouble's nine significant ones print a seed of 2147483647 as
+    // 2.14748365e+09, which reads back as another number (world files write every value this way).
+    case ParamType::Int: return std::to_string(field<int32_t>(s, p));
     default: return fmtDouble(getParam(s, p));
     }
 }

@@ -69,7 +69,10 @@ void buildPattern(const Cloth& cloth, std::span<const SpringKind> kinds, Implici
             C.springSlots.push_back(o);
         }
     C.b.setZero(unknowns);
-    C.dv.setZero(unknowns);
+    // A fresh cache has no dv; one restored from a world file (world_file_read.cpp) brings the
+    // saved warm start, which the solve below must see to continue bit for bit.
+    if (C.dv.size() != unknowns)
+        C.dv.setZero(unknowns);
 }
 
 } // namespace

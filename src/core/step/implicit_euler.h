@@ -36,7 +36,8 @@ struct ImplicitEulerCache {
     // three columns of the blocks (a, a), (a, b), (b, a), (b, b); -1 where an end is pinned.
     std::vector<std::array<int, 12>> springSlots;
     std::vector<std::array<int, 3>> diagSlots; // per particle: its diagonal block's columns
-    Eigen::VectorXd b, dv;
+    Eigen::VectorXd b;
+    Eigen::VectorXd dv; // the last solve: the next solve's first guess (a world file saves it)
     std::vector<Eigen::Vector3d> force; // N per particle at the start of the step
     int lastIterations = 0;             // CG iterations of the last solve
     double lastError = 0;               // CG relative residual of the last solve
