@@ -6,6 +6,7 @@
 #include "clothtear/pieces.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
+#include "clothtear/world_file.h"
 
 #include <chrono>
 #include <cmath>
@@ -105,23 +106,55 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
     };
 }
 
+std::string loadWorldFile(World& world, const std::string& path, std::span<const std::string> overrides) {
+    Result<World> loaded = loadWorld(path);
+    if (!loaded.ok()) return loaded.error;
+    for (const std::string& o : overrides)
+        if (std::string err = applyAssignment(loaded.value.settings, o); !err.empty()) return "--set " + o + ": " + err;
+    world = std::move(loaded.value);
+    return {};
+}
+
+nlohmann::json loadedReport(const std::string& path, const World& w) {
+    return {{"file", path},
+            {"format_version", kWorldFileVersion},
+            {"seconds", w.time},
+            {"steps", w.steps},
+            {"particles", w.cloth.particleCount()},
+            {"tears_total", w.tearLog.total()},
+            {"asleep", w.asleep},
+            {"state_hash", hashHex(stateHash(w))}};
+}
+
 int runHeadless(const RunOptions& o) {
     World world;
-    if (std::string err = loadScene(world, o.scene, o.sets); !err.empty()) {
+    // From a world file, the report's scene is "load:FILE" and its "loaded" field says where the
+    // world stood; --seconds then runs that much further.
+    const std::string scene = o.load.empty() ? o.scene : "load:" + o.load;
+    nlohmann::json loaded;
+    const std::string err = o.load.empty() ? loadScene(world, o.scene, o.sets) : loadWorldFile(world, o.load, o.sets);
+    if (!err.empty()) {
         std::cerr << "clothtear: " << err << "\n";
         return 2;
     }
+    if (!o.load.empty()) loaded = loadedReport(o.load, world);
     if (const std::string warning = sceneWarnings(world); !warning.empty())
         std::cerr << "clothtear: warning: " << warning << "\n";
     const long frames = std::lround(o.seconds / world.settings.time.frameDt);
     const auto start = std::chrono::steady_clock::now();
     for (long f = 0; f < frames; ++f) world.step();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const nlohmann::json report = makeReport(world, o.scene, wall);
+    nlohmann::json report = makeReport(world, scene, wall);
+    if (!loaded.is_null()) report["loaded"] = loaded;
     if (!o.exportObj.empty() && !saveObj(clothMesh(world.cloth), o.exportObj)) {
         std::cerr << "clothtear: cannot write the OBJ export to '" << o.exportObj << "'\n";
         return 2;
     }
+    if (!o.save.empty())
+        if (std::string saveErr = saveWorld(world, o.save); !saveErr.empty()) {
+            std::cerr << "clothtear: " << saveErr << "\n";
+            return 2;
+        }
     if (o.json == "-") {
         std::cout << report.dump(2) << "\n";
     } else if (!o.json.empty()) {
@@ -132,7 +165,7 @@ int runHeadless(const RunOptions& o) {
         }
         out << report.dump(2) << "\n";
     } else {
-        std::cout << o.scene << ": " << world.steps << " frames, " << world.cloth.particleCount() << " particles, "
+        std::cout << scene << ": " << world.steps << " frames, " << world.cloth.particleCount() << " particles, "
                   << world.cloth.triangles.size() << " triangles, max strain " << world.maxStrain << ", tears "
                   << world.tearLog.total() << ", " << report["ms_per_step"].get<double>() << " ms/frame, "
                   << (world.finite ? "finite" : "NON-FINITE") << "\n";

@@ -6,6 +6,7 @@
 #include "clothtear/world.h"
 
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 
 namespace clothtear {
@@ -15,5 +16,12 @@ int runHeadless(const RunOptions& options);
 
 // The report of a finished run (see README for the fields).
 nlohmann::json makeReport(const World& world, const std::string& scene, double wallSeconds);
+
+// --load: the world of a world file (world_file.h) with `overrides` ("key=value", checked by
+// parseRunOptions) applied on top. Returns "" or the one-line message; on error `world` is unchanged.
+std::string loadWorldFile(World& world, const std::string& path, std::span<const std::string> overrides = {});
+
+// The report's "loaded" field: the file and where the world stood when it was loaded.
+nlohmann::json loadedReport(const std::string& path, const World& atLoad);
 
 } // namespace clothtear

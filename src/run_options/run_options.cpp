@@ -24,6 +24,31 @@ int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) 
     return -1;
 }
 
+namespace {
+
+// --load: the world file holds the scene, so naming one too is refused rather than one of them
+// ignored; --set applies on top of the file's parameters (checked as always), except those that
+// rebuild the cloth, which would throw the loaded cloth away.
+std::string checkLoadOptions(const CLI::App& app, const RunOptions& o, bool configScene) {
+    for (const char* option : {"--scene", "--mesh"})
+        if (app.count(option))
+            return std::string("--load and ") + option + ": the world file holds the scene and its cloth; give one of them";
+    if (configScene) return "--load and a config file with a scene line (" + o.config + "): the world file holds the scene; give one of them";
+    Settings probe;
+    for (const std::string& s : o.sets) {
+        if (std::string err = applyAssignment(probe, s); !err.empty()) return "--set " + s + ": " + err;
+        std::string_view key = std::string_view(s).substr(0, s.find('='));
+        while (!key.empty() && (key.front() == ' ' || key.front() == '\t')) key.remove_prefix(1);
+        while (!key.empty() && (key.back() == ' ' || key.back() == '\t')) key.remove_suffix(1);
+        const ParamInfo* p = findParam(key);
+        if (p && p->rebuildsCloth)
+            return "--set " + s + ": " + p->name + " rebuilds the cloth, which would replace the loaded one; not with --load";
+    }
+    return {};
+}
+
+} // namespace
+
 int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtension& extension) {
     CLI::App app{"clothtear: interactive cloth tearing (Onal 2013) and its headless runner"};
     app.add_flag("--headless", o.headless, "Run without a window and print/write a report");
@@ -37,6 +62,10 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
     app.add_option("--config", o.config, "Read the scene and parameters from FILE ('key = value' lines, # comments)");
     app.add_option("--json", o.json, "Write the JSON report to FILE ('-' for stdout)");
     app.add_option("--export-obj", o.exportObj, "At the end, write the cloth as it is (torn) to FILE as OBJ with UVs");
+    app.add_option("--load", o.load,
+                   "Start from the world file FILE (saved with --save or the panel) instead of building a scene; "
+                   "--set applies on top, except parameters that rebuild the cloth");
+    app.add_option("--save", o.save, "At the end, write the whole world to FILE (a world file --load continues exactly)");
     app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");
@@ -62,13 +91,15 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
             return 2;
         }
     // The config file comes first: --scene and --set on the command line win over it.
+    bool configScene = false;
     if (app.count("--config")) {
         Result<ConfigFile> config = loadConfig(o.config);
         if (!config.ok()) {
             std::cerr << "clothtear: " << config.error << "\n";
             return 2;
         }
-        if (!config.value.scene.empty() && !app.count("--scene")) o.scene = config.value.scene;
+        configScene = !config.value.scene.empty();
+        if (configScene && !app.count("--scene")) o.scene = config.value.scene;
         o.sets.insert(o.sets.begin(), config.value.assignments.begin(), config.value.assignments.end());
     }
     if (!mesh.empty()) {
@@ -79,10 +110,18 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
         }
         o.scene = composeSceneName(scene.value.setup->name, mesh);
     }
-    // An export that cannot be written is refused before the run, not after it.
-    if (!o.exportObj.empty() && !std::ofstream(o.exportObj, std::ios::app)) {
-        std::cerr << "clothtear: --export-obj: cannot write '" << o.exportObj << "'\n";
-        return 2;
+    // An export or a save that cannot be written is refused before the run, not after it.
+    for (const auto& [option, path] : {std::pair{"--export-obj", &o.exportObj}, std::pair{"--save", &o.save}})
+        if (!path->empty() && !std::ofstream(*path, std::ios::app)) {
+            std::cerr << "clothtear: " << option << ": cannot write '" << *path << "'\n";
+            return 2;
+        }
+    if (!o.load.empty()) {
+        if (std::string refused = checkLoadOptions(app, o, configScene); !refused.empty()) {
+            std::cerr << "clothtear: " << refused << "\n";
+            return 2;
+        }
+        return -1; // the world file is read by whoever runs it: one line and status 2 if it is bad
     }
     if (Result<SceneName> scene = parseSceneName(o.scene); !scene.ok()) {
         std::cerr << "clothtear: --scene: " << scene.error << "\n";

@@ -1,7 +1,7 @@
 // Run options: the command line every `clothtear` shares, with or without the window app.
 //
 //   --headless --scene NAME --mesh OBJ --seconds S --export-obj FILE --set key=value --config FILE --json FILE
-//   --list-scenes --list-params --version --help
+//   --load FILE --save FILE --list-scenes --list-params --version --help
 //
 // parseRunOptions reads them with CLI11, answers --help, --version and the lists, folds the config
 // file in (the command line wins over it) and checks every --set, so bad input fails before any work
@@ -27,6 +27,8 @@ struct RunOptions {
     std::string config;            // --config FILE ("" for none); already folded into scene and sets
     std::string json;              // report path, "-" for stdout, "" for none
     std::string exportObj;         // --export-obj FILE: the cloth as it ends, torn, as OBJ with UVs
+    std::string load;              // --load FILE: start from a world file (world_file.h), not the scene
+    std::string save;              // --save FILE: the world as it ends, as a world file
     bool listScenes = false;
     bool listParams = false;
     bool version = false;
