@@ -4,7 +4,7 @@
 //   [RUN]      run(): script and scene first (clean errors before any window), then the loop
 //   [WINDOW]   GLFW window, GLEW, renderer, ImGui; the no-display message
 //   [FRAME]    one frame: input -> ImGui -> tools -> panel -> requests -> simulation -> draw -> swap
-//   [REQUESTS] scene picks, resets, texture loads asked for by the panel and hotkeys
+//   [REQUESTS] scene picks, resets, texture loads, world files asked for by the panel and hotkeys
 //   [OUTPUT]   screenshot, recorded script, JSON report
 #include "app.h"
 
@@ -15,6 +15,7 @@
 
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
+#include "clothtear/world_file.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GL/glew.h>
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -77,10 +79,13 @@ int App::run(const AppOptions& options) {
     }
     // A replay must see the same simulation as the recording: one step per displayed frame.
     lockstep_ = replaying_ || recording_ || options.frames >= 0;
-    if (std::string err = loadScene(options.scene, true); !err.empty()) {
+    // --load: the window opens on the world file's cloth (parseRunOptions refused --scene with it).
+    const std::string err = options.load.empty() ? loadScene(options.scene, true) : loadWorldFile(options.load, true);
+    if (!err.empty()) {
         std::cerr << "clothtear: " << err << "\n";
         return 2;
     }
+    if (!options.load.empty()) std::snprintf(state_.worldPath.data(), state_.worldPath.size(), "%s", options.load.c_str());
     if (std::string err = openWindow(); !err.empty()) {
         std::cerr << err << "\n";
         return 2;
@@ -118,6 +123,9 @@ int App::run(const AppOptions& options) {
         std::cerr << "clothtear: cannot write the OBJ export to '" << options.exportObj << "'\n";
         status = 2;
     }
+    if (!options.save.empty())
+        if (std::string saveErr = saveWorld(world_, options.save); !saveErr.empty())
+            std::cerr << "clothtear: " << saveErr << "\n", status = 2;
     if (!options.json.empty()) {
         const std::string text = report(wall).dump(2);
         if (options.json == "-") {
@@ -324,6 +332,7 @@ void App::serveRequests() {
         state_.requestReset = false;
         rebuildWorld();
     }
+    if (state_.requestSaveWorld || state_.requestLoadWorld) serveWorldFile();
     if (state_.requestResetView) {
         state_.requestResetView = false;
         frameWorld(state_.camera, world_);
@@ -367,6 +376,24 @@ void App::serveRequests() {
     }
 }
 
+// The panel's world file row: Save writes the world as it is; Load replaces it, or says in red why
+// not and keeps the current one.
+void App::serveWorldFile() {
+    const std::string path(state_.worldPath.data());
+    std::string err = path.empty() ? "no world file path given" : "";
+    if (err.empty() && state_.requestSaveWorld) err = saveWorld(world_, path);
+    if (err.empty() && state_.requestLoadWorld) {
+        err = loadWorldFile(path, false);
+        if (!err.empty()) err += "; keeping the current cloth";
+        else state_.requestResetView = true;
+    }
+    state_.worldError = err;
+    if (err.empty())
+        state_.say(state_.requestSaveWorld ? "Saved the world to " + path
+                                           : withWarnings("Loaded " + path + " at t = " + std::to_string(world_.time) + " s"));
+    state_.requestSaveWorld = state_.requestLoadWorld = false;
+}
+
 // =========================================================================================== [OUTPUT]
 
 std::string App::writeScreenshot(const std::string& path) {
@@ -395,6 +422,7 @@ std::string App::writeScreenshot(const std::string& path) {
 
 nlohmann::json App::report(double wallSeconds) const {
     nlohmann::json r = makeReport(world_, state_.scene, wallSeconds);
+    if (!loaded_.is_null()) r["loaded"] = loaded_;
     nlohmann::json settings = nlohmann::json::object();
     for (const ParamInfo& p : allParams()) settings[p.name] = formatParamValue(world_.settings, p);
     r["settings"] = settings;
@@ -414,6 +442,8 @@ nlohmann::json App::report(double wallSeconds) const {
         {"texture", state_.textureName},
         {"texture_error", state_.textureError},
         {"mesh_error", state_.meshError},
+        {"world_file", state_.worldFile},
+        {"world_error", state_.worldError},
     };
     const History& h = rewind_.history();
     r["app"]["history"] = {

@@ -28,6 +28,7 @@ private:
     void closeWindow();
     void frame(bool last);
     void serveRequests();
+    void serveWorldFile();
     std::string writeScreenshot(const std::string& path);
     nlohmann::json report(double wallSeconds) const;
     void loadBuiltInTexture(bool numbered); // the woven default, or the numbered debug texture
@@ -42,6 +43,9 @@ private:
     View currentView() const;
     // app_sim.cpp
     std::string loadScene(const std::string& name, bool withOverrides);
+    // A world file (--load, the panel's Load) instead of the current world; "" or the message.
+    std::string loadWorldFile(const std::string& path, bool withOverrides);
+    void startedAnew(); // a new world: no held particle, no wind, fresh ball flags and clock
     // `message`, with what sceneWarnings says about the world appended (every particle pinned).
     std::string withWarnings(std::string message) const;
     void rebuildWorld();
@@ -67,6 +71,7 @@ private:
     bool recording_ = false;
     InputScript recorded_;
     bool lockstep_ = false; // one simulation step per displayed frame (replays, --frames, recording)
+    nlohmann::json loaded_; // the report's "loaded" field after a world file was loaded (runner.h)
     // mouse ownership: a press that ImGui took stays ImGui's until released
     std::array<bool, 3> uiOwnsButton_{};
     float lastMouseX_ = 0.f, lastMouseY_ = 0.f;

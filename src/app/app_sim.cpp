@@ -1,6 +1,8 @@
 // The simulation side of the app: scenes, rebuilds, the fixed-step loop and the stats.
 #include "app.h"
 
+#include "runner.h"
+
 #include "clothtear/scenes.h"
 
 #include <algorithm>
@@ -20,28 +22,40 @@ std::string App::loadScene(const std::string& name, bool withOverrides) {
         std::snprintf(state_.meshPath.data(), state_.meshPath.size(), "%s", path.c_str());
     }
     state_.say(withWarnings({}));
+    startedAnew();
+    return {};
+}
+
+std::string App::loadWorldFile(const std::string& path, bool withOverrides) {
+    const std::vector<std::string> none;
+    // clothtear::loadWorldFile leaves the world as it was on error.
+    if (std::string err = clothtear::loadWorldFile(world_, path, withOverrides ? state_.overrides : none); !err.empty())
+        return err;
+    state_.worldFile = path;
+    loaded_ = loadedReport(path, world_);
+    startedAnew();
+    return {};
+}
+
+void App::startedAnew() {
+    // New particles: a held particle index would now mean another one.
     state_.drag = DragState{};
     state_.windBlowing = false;
     state_.ballFlags.assign(world_.balls.size(), 0);
     state_.clock.reset();
     state_.stats.sampleStart = -1;
-    rewind_.restart(world_);
-    return {};
+    rewind_.restart(world_); // a new world: its own history (rewind.h)
 }
 
 void App::rebuildWorld() {
-    // The rebuild makes new particles: a held particle index would now mean another one.
-    state_.drag = DragState{};
-    state_.windBlowing = false;
     if (std::string err = world_.rebuild(); !err.empty()) {
+        state_.drag = DragState{};
+        state_.windBlowing = false;
         state_.say("Rebuild failed: " + err);
         return;
     }
     if (Result<SceneName> scene = parseSceneName(state_.scene); scene.ok()) scene.value.setup->populate(world_);
-    state_.ballFlags.assign(world_.balls.size(), 0);
-    state_.clock.reset();
-    state_.stats.sampleStart = -1;
-    rewind_.restart(world_);
+    startedAnew();
     state_.say(withWarnings({})); // a pin mode that pins every particle is worth a word
 }
 

@@ -89,6 +89,9 @@ struct AppState {
     std::string textureError;      // shown in red under the loader; the current texture stays
     std::array<char, 512> meshPath{};    // the path field of the OBJ loader (Mesh section)
     std::string meshError;               // shown in red under it; the current cloth stays
+    std::array<char, 512> worldPath{};   // the path field of the world file's Save and Load (Mesh section)
+    std::string worldError;              // shown in red under it; on a failed load the current cloth stays
+    std::string worldFile;               // the world file loaded last ("" for none)
     std::string message;           // status line shown over the view for a few seconds (errors, screenshots)
     uint64_t messageFrame = 0;     // frame the message was set in
     // ---- requests from the panel and hotkeys, served by the main loop once per frame
@@ -107,6 +110,8 @@ struct AppState {
     bool requestRedo = false;       // Ctrl+Shift+Z or Ctrl+Y
     int requestView = -1;           // the timeline: show this recorded frame (pauses)
     int64_t requestDeletePiece = -1; // the stats pane's Delete: the piece holding this triangle
+    bool requestSaveWorld = false;  // the whole world to the world file of worldPath
+    bool requestLoadWorld = false;  // the world of the world file of worldPath, instead of the current one
     bool quit = false;
     // ---- counters and stats
     uint64_t frame = 0;            // displayed frames so far

@@ -120,6 +120,22 @@ void currentFileText(const std::string& path) {
     if (ImGui::IsItemHovered() && name != path) ImGui::SetTooltip("%s", path.c_str());
 }
 
+// The world file (docs/world-file.md): the whole state saved, or loaded to continue exactly. Below
+// the mesh loader, so that nothing above it moves (the window tests click at fixed places). No
+// Enter action: a path typed to save to must not load that file over the current cloth.
+void worldFileRow(AppState& st) {
+    ImGui::TextDisabled("World file (the whole state, to continue exactly)");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
+    ImGui::InputTextWithHint("##worldpath", "path/to/world.ctw", st.worldPath.data(), st.worldPath.size());
+    ImGui::SameLine();
+    if (ImGui::Button("Save##world")) st.requestSaveWorld = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Write the world as it is now (cloth, balls, parameters, time) to the file");
+    ImGui::SameLine();
+    if (ImGui::Button("Load##world")) st.requestLoadWorld = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Replace the world by the file's: it continues where it was saved");
+    errorText(st.worldError);
+}
+
 // An OBJ mesh for the current setup (curtain, pull, ball...): scenes compose a mesh with a setup.
 void meshSection(AppState& st) {
     const Result<SceneName> scene = parseSceneName(st.scene);
@@ -138,6 +154,7 @@ void meshSection(AppState& st) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Write the cloth as it is now, torn, with its UVs to clothtear-FRAME.obj");
     errorText(st.meshError);
+    worldFileRow(st);
 }
 
 void textureSection(AppState& st) {

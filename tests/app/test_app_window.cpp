@@ -372,3 +372,54 @@ TEST(AppWindow, CtrlZUndoesABallsTearsExactlyAndTheTimelineRewinds) {
     EXPECT_LT(rewound["app"]["history"]["viewing"].get<int>(), 45);
     EXPECT_LT(rewound["seconds"].get<double>(), 0.75) << "a frame of the past is shown";
 }
+
+// The world file row under the mesh loader (issue 14): the Mesh section opened (header at y 271),
+// the path field (y 374) clicked and typed into, then Save (x 271) or Load (x 315). A missing file
+// shows the error in red and keeps the cloth; a torn world saved by the runner opens where it was
+// and goes on; Save writes a file the runner continues.
+TEST(AppWindow, WorldFileSavesAndLoadsFromThePanel) {
+    REQUIRE_XVFB();
+    const fs::path saved = tempDir() / "panel_pull.ctw", json = tempDir() / "world_panel.json";
+    AppRun r = runApp("--headless --scene pull --set cloth.resolution_x=12 --set cloth.resolution_y=12 --seconds 2 "
+                      "--save '" + saved.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const nlohmann::json before = readJson(json);
+    ASSERT_GT(before["tears_total"].get<int>(), 0) << "a torn world";
+    auto worldScript = [](const std::string& path, int buttonX) {
+        std::string s = "0 move 60 271\n1 click left\n3 move 120 374\n4 click left\n";
+        for (unsigned char c : path) s += "6 char " + std::to_string(int(c)) + "\n";
+        return s + "8 move " + std::to_string(buttonX) + " 374\n9 click left\n14 end\n";
+    };
+    const fs::path script = tempDir() / "world_panel.txt";
+
+    std::ofstream(script) << worldScript((tempDir() / "no_such_world.ctw").string(), 315);
+    r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    nlohmann::json report = readJson(json);
+    EXPECT_EQ(report["particles"], 1600) << "the curtain stays";
+    EXPECT_EQ(report["app"]["world_file"], "");
+    const std::string error = report["app"]["world_error"];
+    EXPECT_EQ(error, (tempDir() / "no_such_world.ctw").string() +
+                         ": cannot open: No such file or directory; keeping the current cloth");
+
+    std::ofstream(script) << worldScript(saved.string(), 315);
+    r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    report = readJson(json);
+    EXPECT_EQ(report["app"]["world_error"], "");
+    EXPECT_EQ(report["app"]["world_file"], saved.string());
+    EXPECT_EQ(report["loaded"]["state_hash"], before["state_hash"]) << "the panel loaded the saved world";
+    EXPECT_GE(report["particles"].get<int>(), before["particles"].get<int>());
+    EXPECT_GE(report["tears_total"].get<int>(), before["tears_total"].get<int>());
+    EXPECT_GT(report["seconds"].get<double>(), before["seconds"].get<double>()) << "and it went on from there";
+
+    const fs::path written = tempDir() / "panel_saved.ctw";
+    std::ofstream(script) << worldScript(written.string(), 271);
+    r = runApp("--scene pull --script '" + script.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    report = readJson(json);
+    EXPECT_EQ(report["app"]["world_error"], "");
+    r = runApp("--headless --load '" + written.string() + "' --seconds 0 --json '" + json.string() + "'", false);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(readJson(json)["particles"], report["particles"]) << "the panel's Save wrote the pull it showed";
+}
