@@ -173,7 +173,8 @@ void writeStepState(ByteWriter& w, const World& world) {
     if (world.asleep) writeSettings(w, sleep.settings);
     else w.u32(0);
     const ImplicitCacheSlot& slot = s.implicit;
-    const bool warm = slot.cache && slot.cache->built && slot.stamp.valid &&
+    // (A cache restored from a file has its dv but no matrix yet: built is false, the dv counts.)
+    const bool warm = slot.cache && slot.stamp.valid &&
                       slot.stamp.built.topology == world.cloth.topologyRevision &&
                       slot.stamp.built.mass == world.cloth.massRevision;
     const Eigen::VectorXd none;
