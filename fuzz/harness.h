@@ -17,6 +17,7 @@ std::string fuzzObj(std::string_view bytes);    // OBJ importer (parseObj), then
 std::string fuzzSet(std::string_view bytes);    // one --set key=value (applyAssignment)
 std::string fuzzConfig(std::string_view bytes); // a --config file (parseConfig)
 std::string fuzzScript(std::string_view bytes); // an input script (parseInputScript)
+std::string fuzzWorld(std::string_view bytes);  // a world file (parseWorld), then a save and a frame
 
 struct Target {
     const char* name; // fuzz/corpus/<name>, fuzz/regressions/<name>, fuzz_<name>

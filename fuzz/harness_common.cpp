@@ -9,6 +9,7 @@ std::span<const Target> targets() {
         {"set", fuzzSet},
         {"config", fuzzConfig},
         {"script", fuzzScript},
+        {"world", fuzzWorld},
     };
     return kTargets;
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (build/fuzz: ASan + UBSan + coverage) and runs them.
-# Usage: tools/fuzz.sh [SECONDS] [TARGET...]     SECONDS per target (default 20); TARGET: obj set config script
+# Usage: tools/fuzz.sh [SECONDS] [TARGET...]     SECONDS per target (default 20); TARGET: obj set config script world
 #   tools/fuzz.sh 20                 # what CI runs: each target 20 s, two at a time
 #   tools/fuzz.sh 600 obj            # ten minutes of the OBJ importer
 # Each target starts from fuzz/corpus/<target> and fuzz/regressions/<target> and adds what it finds
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-20}"
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(obj set config script)
+((${#targets[@]})) || targets=(obj set config script world)
 build="${CLOTHTEAR_FUZZ_BUILD:-build/fuzz}"
 jobs="${CLOTHTEAR_FUZZ_JOBS:-2}"
 cxx="$(command -v clang++-14 || command -v clang++ || true)"
