@@ -123,6 +123,12 @@ template <class V> void requireFinite(ByteReader& r, const V& v, double limit, c
     if (!v.allFinite()) r.fail(what + " is not finite " + show(v));
     if (double(v.cwiseAbs().maxCoeff()) > limit) r.fail(what + " " + show(v) + " is beyond +-" + num(limit));
 }
+// A vector read and checked: finite, each component within +-limit.
+template <class V> V boundedVec(ByteReader& r, double limit, const std::string& what) {
+    const V v = r.vec<V>();
+    requireFinite(r, v, limit, what);
+    return v;
+}
 void requireNumber(ByteReader& r, double v, double lo, double hi, const std::string& what) {
     if (!(v >= lo && v <= hi)) r.fail(what + " " + num(v) + " is not in [" + num(lo) + ", " + num(hi) + "]");
 }
@@ -177,14 +183,11 @@ void readParticles(ByteReader& r, Cloth& c) {
     constexpr uint8_t kKnownFlags = kPinned | kWeak | kHinge | kTouched | kHem;
     for (size_t p = 0; p < n; ++p) {
         const std::string at = "particle " + std::to_string(p) + ": ";
-        c.x[p] = r.vec<Vec3>();
-        requireFinite(r, c.x[p], kMaxCoordinate, at + "position");
-        c.v[p] = r.vec<Vec3>();
-        requireFinite(r, c.v[p], kMaxSpeed, at + "velocity");
+        c.x[p] = boundedVec<Vec3>(r, kMaxCoordinate, at + "position");
+        c.v[p] = boundedVec<Vec3>(r, kMaxSpeed, at + "velocity");
         c.areaShare[p] = r.f64();
         requireNumber(r, c.areaShare[p], 0.0, 1e300, at + "area share");
-        c.rest[p] = r.vec<Vec3d>();
-        requireFinite(r, c.rest[p], kMaxCoordinate, at + "rest position");
+        c.rest[p] = boundedVec<Vec3d>(r, kMaxCoordinate, at + "rest position");
         c.flags[p] = r.u8();
         if (c.flags[p] & ~kKnownFlags) r.fail(at + "unknown flag bits " + std::to_string(c.flags[p] & ~kKnownFlags));
         c.particleTris[p].resize(r.count(r.u32(), 4, (at + "triangle").c_str()));
@@ -194,17 +197,25 @@ void readParticles(ByteReader& r, Cloth& c) {
 
 // Springs, bend-shear springs, triangles: the indices are checked by validateCloth, in one place,
 // after everything was read (it checks every range before it follows an index).
+
+// A Spring record: ends, rest length (m), weight. A bend-shear spring across a flat pair of
+// triangles may have a rest length of 0 (the opposite corners on one point); a structural one not.
+Spring readSpring(ByteReader& r, const std::string& at, bool restMayBeZero) {
+    Spring sp;
+    sp.a = r.u32(), sp.b = r.u32();
+    sp.rest = r.f32();
+    if (restMayBeZero) requireNumber(r, sp.rest, 0.0, kMaxLength, at + "rest length");
+    else requirePositive(r, sp.rest, kMaxLength, at + "rest length");
+    sp.weight = r.f32();
+    requireNumber(r, sp.weight, 0.0, 1e30, at + "weight");
+    return sp;
+}
+
 void readSprings(ByteReader& r, Cloth& c) {
     const size_t ns = r.count(r.u64(), kSpringBytes, "spring");
     c.springs.resize(ns), c.springTopo.resize(ns);
     for (size_t s = 0; s < ns; ++s) {
-        const std::string at = "spring " + std::to_string(s) + ": ";
-        Spring& sp = c.springs[s];
-        sp.a = r.u32(), sp.b = r.u32();
-        sp.rest = r.f32();
-        requirePositive(r, sp.rest, kMaxLength, at + "rest length");
-        sp.weight = r.f32();
-        requireNumber(r, sp.weight, 0.0, 1e30, at + "weight");
+        c.springs[s] = readSpring(r, "spring " + std::to_string(s) + ": ", false);
         for (Index& t : c.springTopo[s].tri) t = r.u32();
         c.springTopo[s].bend = r.u32();
     }
@@ -214,14 +225,7 @@ void readBends(ByteReader& r, Cloth& c) {
     const size_t nb = r.count(r.u64(), kBendBytes, "bend spring");
     c.bends.resize(nb), c.bendEdge.resize(nb);
     for (size_t b = 0; b < nb; ++b) {
-        const std::string at = "bend spring " + std::to_string(b) + ": ";
-        Spring& sp = c.bends[b];
-        sp.a = r.u32(), sp.b = r.u32();
-        sp.rest = r.f32();
-        // A flat pair of triangles can put the opposite corners on one point: rest length 0.
-        requireNumber(r, sp.rest, 0.0, kMaxLength, at + "rest length");
-        sp.weight = r.f32();
-        requireNumber(r, sp.weight, 0.0, 1e30, at + "weight");
+        c.bends[b] = readSpring(r, "bend spring " + std::to_string(b) + ": ", true);
         c.bendEdge[b] = r.u32();
     }
 }
@@ -234,10 +238,7 @@ void readTriangles(ByteReader& r, Cloth& c) {
         Triangle& tri = c.triangles[t];
         for (Index& p : tri.p) p = r.u32();
         for (Index& s : tri.s) s = r.u32();
-        for (Vec2d& uv : tri.uv) {
-            uv = r.vec<Vec2d>();
-            requireFinite(r, uv, kMaxUv, at + "texture coordinate");
-        }
+        for (Vec2d& uv : tri.uv) uv = boundedVec<Vec2d>(r, kMaxUv, at + "texture coordinate");
         tri.restArea = r.f64();
         requirePositive(r, tri.restArea, kMaxLength * kMaxLength, at + "rest area");
     }
@@ -272,10 +273,8 @@ void readBodies(ByteReader& r, World& w) {
     for (size_t i = 0; i < w.balls.size(); ++i) {
         const std::string at = "ball " + std::to_string(i) + ": ";
         Ball& b = w.balls[i];
-        b.x = r.vec<Vec3>();
-        requireFinite(r, b.x, kMaxCoordinate, at + "position");
-        b.v = r.vec<Vec3>();
-        requireFinite(r, b.v, kMaxSpeed, at + "velocity");
+        b.x = boundedVec<Vec3>(r, kMaxCoordinate, at + "position");
+        b.v = boundedVec<Vec3>(r, kMaxSpeed, at + "velocity");
         b.radius = r.f32();
         requirePositive(r, b.radius, kMaxCoordinate, at + "radius");
         b.mass = r.f32();
@@ -288,8 +287,7 @@ void readBodies(ByteReader& r, World& w) {
     for (size_t i = 0; i < w.drivers.size(); ++i) {
         const std::string at = "driver " + std::to_string(i) + ": ";
         Driver& d = w.drivers[i];
-        d.velocity = r.vec<Vec3>();
-        requireFinite(r, d.velocity, kMaxSpeed, at + "velocity");
+        d.velocity = boundedVec<Vec3>(r, kMaxSpeed, at + "velocity");
         d.particles.resize(r.count(r.u64(), 4, (at + "particle").c_str()));
         for (Index& p : d.particles) {
             p = r.u32();
@@ -336,17 +334,12 @@ void readStepState(ByteReader& r, World& w, StepState& s) {
     const uint64_t kicks = r.u64();
     if (kicks > c.particleCount()) r.fail("Verlet kicks for " + std::to_string(kicks) + " particles, the cloth has " + std::to_string(c.particleCount()));
     s.verletKick.resize(r.count(kicks, 12, "Verlet kick"));
-    for (Vec3& k : s.verletKick) {
-        k = r.vec<Vec3>();
-        requireFinite(r, k, kMaxSpeed, "Verlet kick");
-    }
+    for (Vec3& k : s.verletKick) k = boundedVec<Vec3>(r, kMaxSpeed, "Verlet kick");
     SleepState& sleep = s.sleep;
     sleep.restSince = r.f64();
     if (sleep.restSince != -1.0) requireNumber(r, sleep.restSince, 0.0, w.time, "at rest since");
-    sleep.lo = r.vec<Vec3>();
-    requireFinite(r, sleep.lo, 1e30, "sleep box corner");
-    sleep.hi = r.vec<Vec3>();
-    requireFinite(r, sleep.hi, 1e30, "sleep box corner");
+    sleep.lo = boundedVec<Vec3>(r, 1e30, "sleep box corner");
+    sleep.hi = boundedVec<Vec3>(r, 1e30, "sleep box corner");
     sleep.topology = r.u64();
     const uint8_t sameMass = r.u8();
     if (sameMass > 1) r.fail("sleep mass flag is " + std::to_string(sameMass) + ", not 0 or 1");

@@ -32,6 +32,7 @@ class ByteWriter {
     void vec(const Vec3& v) { f32(v.x()), f32(v.y()), f32(v.z()); }
     void vec(const Vec3d& v) { f64(v.x()), f64(v.y()), f64(v.z()); }
     void vec(const Vec2d& v) { f64(v.x()), f64(v.y()); }
+    void spring(const Spring& s) { u32(s.a), u32(s.b), f32(s.rest), f32(s.weight); }
     void text(const std::string& s) {
         u32(uint32_t(s.size()));
         out += s;
@@ -94,18 +95,14 @@ void writeCloth(ByteWriter& w, const Cloth& c) {
     w.beginSection(kSecSprings);
     w.u64(c.springs.size());
     for (size_t s = 0; s < c.springs.size(); ++s) {
-        const Spring& sp = c.springs[s];
-        w.u32(sp.a), w.u32(sp.b), w.f32(sp.rest), w.f32(sp.weight);
+        w.spring(c.springs[s]);
         w.u32(c.springTopo[s].tri[0]), w.u32(c.springTopo[s].tri[1]), w.u32(c.springTopo[s].bend);
     }
     w.endSection();
 
     w.beginSection(kSecBends);
     w.u64(c.bends.size());
-    for (size_t b = 0; b < c.bends.size(); ++b) {
-        const Spring& sp = c.bends[b];
-        w.u32(sp.a), w.u32(sp.b), w.f32(sp.rest), w.f32(sp.weight), w.u32(c.bendEdge[b]);
-    }
+    for (size_t b = 0; b < c.bends.size(); ++b) w.spring(c.bends[b]), w.u32(c.bendEdge[b]);
     w.endSection();
 
     w.beginSection(kSecTriangles);
