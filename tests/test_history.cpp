@@ -35,6 +35,7 @@ const Case kCases[] = {
     {"drop", {"cloth.resolution_x=14", "cloth.resolution_y=14"}, 60},
     {"corners", {"cloth.resolution_x=14", "cloth.resolution_y=14", "time.integrator=verlet"}, 40},
     {"swing", {"cloth.resolution_x=12", "cloth.resolution_y=12", "time.integrator=xpbd"}, 30},
+    {"curtain", {"cloth.resolution_x=8", "cloth.resolution_y=8", "time.integrator=implicit-euler", "sleep.enabled=0"}, 20},
 };
 
 } // namespace

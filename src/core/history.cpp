@@ -5,6 +5,7 @@
 // previous checkpoint where equal); everything else is copied by value.
 #include "clothtear/history.h"
 
+#include "step/implicit_euler.h"
 #include "step/step_state.h"
 
 #include <algorithm>
@@ -91,6 +92,14 @@ void visitState(W& w, S& carry, F& f) {
     f.value(carry.sleep.lo);
     f.value(carry.sleep.hi);
     f.array(carry.sleep.frameStart);
+    f.warmStart(carry.implicit, w.cloth);
+}
+
+// Implicit Euler's last solve, the next solve's first guess (a world file keeps it too): kept when
+// it belongs to this cloth; restored with a stamp saying so (the matrix is rebuilt, the guess kept).
+bool warmFor(const ImplicitCacheSlot& slot, const Cloth& cloth) {
+    return slot.cache && slot.stamp.valid && slot.stamp.built.topology == cloth.topologyRevision &&
+           slot.stamp.built.mass == cloth.massRevision;
 }
 
 // Taking: arrays into chunks, each shared with the previous checkpoint's chunk in the same place
@@ -141,6 +150,10 @@ struct Taker {
     }
     void string(const std::string& s) { out.strings.push_back(s); }
     void drivers(const std::vector<Driver>& d) { out.drivers = d; }
+    void warmStart(const ImplicitCacheSlot& slot, const Cloth& cloth) {
+        const bool warm = warmFor(slot, cloth);
+        bytes(warm ? slot.cache->dv.data() : nullptr, warm ? size_t(slot.cache->dv.size()) * sizeof(double) : 0);
+    }
 };
 
 // Restoring: the same walk, reading back.
@@ -174,6 +187,16 @@ struct Restorer {
     }
     void string(std::string& s) { s = in.strings[stringAt++]; }
     void drivers(std::vector<Driver>& d) { d = in.drivers; }
+    void warmStart(ImplicitCacheSlot& slot, const Cloth& cloth) {
+        std::vector<double> dv;
+        array(dv);
+        if (dv.empty()) return;
+        slot.cache = std::make_unique<ImplicitEulerCache>();
+        slot.cache->dv = Eigen::Map<const Eigen::VectorXd>(dv.data(), Eigen::Index(dv.size()));
+        slot.stamp.valid = true;
+        slot.stamp.built.topology = cloth.topologyRevision;
+        slot.stamp.built.mass = cloth.massRevision;
+    }
 };
 
 template <class F>
@@ -228,6 +251,7 @@ struct OffsetFinder {
     }
     void string(const std::string&) {}
     void drivers(const std::vector<Driver>&) {}
+    void warmStart(const ImplicitCacheSlot&, const Cloth&) {}
 };
 const Offsets& offsets() {
     static const Offsets o = [] {
