@@ -8,7 +8,9 @@
 
 namespace clothtear {
 
-enum class TearMode : int { Basic = 0, WeakPoint = 1, OnePoint = 2, Count };
+// The first three are the physics' tears (Onal 3.2.1-3.2.3); Knife is a spring the knife cut
+// (knife.h): one event per edge it opened, so counts, stats and sounds can tell a cut from a tear.
+enum class TearMode : int { Basic = 0, WeakPoint = 1, OnePoint = 2, Knife = 3, Count };
 const char* tearModeName(TearMode m);
 
 struct TearEvent {
@@ -23,11 +25,13 @@ struct TearLog {
     std::vector<TearEvent> events;
     std::array<uint64_t, int(TearMode::Count)> counts{};
     size_t maxEvents = 100000; // older events are kept; beyond this only counts grow
-    std::string validationError; // first invariant violation found after a tear (when validating)
+    uint64_t knifeCuts = 0;      // strokes (World::cut calls) that opened at least one spring
+    std::string validationError; // first invariant violation found after a tear or cut (when validating)
     void add(const TearEvent& e) {
         counts[int(e.mode)]++;
         if (events.size() < maxEvents) events.push_back(e);
     }
+    // Tears by the physics; the knife's cut springs are counts[Knife], apart.
     uint64_t total() const { return counts[0] + counts[1] + counts[2]; }
 };
 

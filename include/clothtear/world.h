@@ -7,6 +7,7 @@
 // changes (tearing) happen only in the tear phase, between the others.
 #pragma once
 #include "clothtear/cloth.h"
+#include "clothtear/knife.h"
 #include "clothtear/settings.h"
 #include "clothtear/tear.h"
 #include "clothtear/tear_events.h"
@@ -129,6 +130,15 @@ public:
     // an explicit integrator) towards frameDt / stableStepEstimate(), at most time.max_substeps.
     int guardSubsteps();
 
+    // Cuts the cloth along `stroke`, points (u, v) in metres in restFrame (knife.h), at once: called
+    // between frames, never inside one, so no phase sees the topology change under it. At once rather
+    // than queued for the tear phase: the caller (the knife tool, the runner's --cut) gets what was
+    // cut or why the stroke was refused right away, and the cut is not subject to the tear phase's
+    // per-sub-step cap (tear.max_per_step), which is for the physics' tears. Wakes the cloth; copies
+    // of driven particles keep following their drivers, as after a tear. Counted in the tear log
+    // (TearMode::Knife per spring, knifeCuts per stroke).
+    CutResult cut(const std::vector<Vec2d>& stroke);
+
     // One-shot velocity change dv (m/s) along `direction` on the particles within `radius` of `center`.
     int applyImpulse(const Vec3& center, float radius, const Vec3& direction, float dv);
 
@@ -142,6 +152,7 @@ public:
     double potentialEnergy() const; // gravity + springs
 
     MeshData restMesh; // the mesh the cloth was built from (for rebuilds and reports)
+    MeshFrame restFrame; // knifeFrame of restMesh (set by rebuild): the frame of cut strokes
 
     // The step's internals (src/core/step/): only the core can use them (the type is incomplete here).
     const StepState& stepState() const { return *state_; }

@@ -20,7 +20,7 @@
 namespace clothtear {
 
 const char* tearModeName(TearMode m) {
-    static const char* names[] = {"basic", "weak_point", "one_point"};
+    static const char* names[] = {"basic", "weak_point", "one_point", "knife"};
     return names[int(m)];
 }
 
@@ -50,7 +50,8 @@ void relieve(Cloth& c, Index holder, Index spring, float target) {
 // ================================================================================================ [BASIC]
 //
 // Spring s = (a, b) with triangles T1 = (a, b, c) and, unless s is on a border, T2 = (b, a, d).
-// Each triangle is split at the midpoint m; a gets its own copy ma, b gets mb:
+// Each triangle is split at the midpoint m (splitSpring, tear_topology.cpp: the knife splits with it
+// too); a gets its own copy ma, b gets mb:
 //
 //          c                          c
 //         / .                        /|.
@@ -74,97 +75,23 @@ bool basicTear(Cloth& c, Index s, float strain, const TearContext& ctx) {
         if (t != kNone) scale = std::max(scale, c.triangles[t].restArea);
     if (!(sp.rest > 1e-6f) || sp.rest < c.minSplitRest || !(scale > 1e-14)) return false;
 
-    if (topo.bend != kNone) removeBendSpring(c, topo.bend);
-    const Vec3d restM = 0.5 * (c.rest[a] + c.rest[b]);
-    const Index ma = appendParticleCopy(c, a), mb = appendParticleCopy(c, b);
-    c.rest[ma] = c.rest[mb] = restM;
-    c.flags[ma] = c.flags[mb] = 0; // new midpoints are never pinned
+    std::vector<Index> touched;
+    const SplitEnds m = splitSpring(c, s, 0.5, true, touched);
     // Fig. 3.9: place the new ends so that each half is at most slightly stretched.
     const Vec3 d = c.x[b] - c.x[a];
     const float len = d.norm();
     const float half = std::min(0.5f * len, 0.5f * sp.rest * (1.f + 0.5f * ctx.settings.weakThreshold));
     const Vec3 dir = len > 0.f ? Vec3(d / len) : Vec3::Zero();
-    c.x[ma] = c.x[a] + dir * half;
-    c.x[mb] = c.x[b] - dir * half;
+    c.x[m.onA] = c.x[a] + dir * half;
+    c.x[m.onB] = c.x[b] - dir * half;
     // v of the copies = v of their side: momentum is conserved because ma takes exactly the mass a
     // loses (one sixth of each split triangle), likewise mb from b.
-
-    // Reuse s as the half a-ma; append the half mb-b.
-    c.springs[s] = Spring{a, ma, 0.5f * sp.rest, 0.f};
-    c.springTopo[s] = SpringTopo{};
-    const Index hb = appendSpring(c, mb, b, 0.5 * sp.rest);
-    std::vector<Index> touched;
-    for (Index t : topo.tri) {
-        if (t == kNone) continue;
-        const Triangle T = c.triangles[t];
-        const int i = edgeSlotOf(T, s);
-        const Index P = T.p[i], Q = T.p[(i + 1) % 3], C = T.p[(i + 2) % 3];
-        const Index sQC = T.s[(i + 1) % 3], sCP = T.s[(i + 2) % 3];
-        const Vec2d uvM = 0.5 * (T.uv[i] + T.uv[(i + 1) % 3]);
-        const bool pIsA = (P == a);
-        const Index mP = pIsA ? ma : mb, mQ = pIsA ? mb : ma;
-        const Index hP = pIsA ? s : hb, hQ = pIsA ? hb : s;
-        const Index dP = appendSpring(c, mP, C, (c.rest[C] - restM).norm());
-        const Index dQ = appendSpring(c, mQ, C, (c.rest[C] - restM).norm());
-        const Index tq = Index(c.triangles.size());
-        // P-side half stays in slot t, Q-side half is appended.
-        c.triangles[t] = Triangle{{P, mP, C}, {hP, dP, sCP}, {T.uv[i], uvM, T.uv[(i + 2) % 3]}, 0.5 * T.restArea};
-        c.triangles.push_back(
-            Triangle{{mQ, Q, C}, {hQ, sQC, dQ}, {uvM, T.uv[(i + 1) % 3], T.uv[(i + 2) % 3]}, 0.5 * T.restArea});
-        topoAddTriangle(c.springTopo[hP], t);
-        topoAddTriangle(c.springTopo[hQ], tq);
-        topoAddTriangle(c.springTopo[dP], t);
-        topoAddTriangle(c.springTopo[dQ], tq);
-        topoReplaceTriangle(c.springTopo[sQC], t, tq);
-        replaceIn(c.particleTris[Q], t, tq);
-        c.particleTris[C].push_back(tq);
-        c.particleTris[mP].push_back(t);
-        c.particleTris[mQ].push_back(tq);
-        touched.push_back(t);
-        touched.push_back(tq);
-    }
     refreshAround(c, touched);
     if (ctx.log) {
         const Triangle& t0 = c.triangles[touched[0]];
-        ctx.log->add(TearEvent{TearMode::Basic, ctx.time, restM, t0.uv[1], strain});
+        ctx.log->add(TearEvent{TearMode::Basic, ctx.time, c.rest[m.onA], t0.uv[1], strain});
     }
     return true;
-}
-
-// Moves the triangles `group` of particle p's fan onto a new copy of p. Spokes that belong only to
-// those triangles move with them; `sharedSpoke` (if any) is a spoke between the group and the rest of
-// the fan: it stays with the rest and the group gets its own copy of it. Returns the copy.
-Index detachGroup(Cloth& c, Index p, const std::vector<Index>& group, Index sharedSpoke, std::vector<Index>& touched) {
-    const Index q = appendParticleCopy(c, p);
-    if (sharedSpoke != kNone) {
-        const Spring old = c.springs[sharedSpoke];
-        const Index far = otherEnd(old, p);
-        const Index copy = appendSpring(c, q, far, old.rest);
-        for (Index t : group) {
-            Triangle& T = c.triangles[t];
-            const int slot = edgeSlotOf(T, sharedSpoke);
-            if (slot < 0) continue;
-            T.s[slot] = copy;
-            topoRemoveTriangle(c.springTopo[sharedSpoke], t);
-            topoAddTriangle(c.springTopo[copy], t);
-        }
-    }
-    for (Index t : group) {
-        Triangle& T = c.triangles[t];
-        const int corner = cornerOf(T, p);
-        T.p[corner] = q;
-        // The two springs of T at this corner now start at q (unless already moved or the copy).
-        for (Index s : {T.s[corner], T.s[(corner + 2) % 3]}) {
-            Spring& sp = c.springs[s];
-            if (sp.a == p) sp.a = q;
-            else if (sp.b == p) sp.b = q;
-        }
-        eraseFrom(c.particleTris[p], t);
-        c.particleTris[q].push_back(t);
-        touched.push_back(t);
-    }
-    if (c.pinned(p)) c.setPinned(q, true);
-    return q;
 }
 
 void addFanTriangles(const Cloth& c, Index p, std::vector<Index>& touched) {
@@ -231,7 +158,7 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
     // Triangles after the cut spoke go to the copy; the cut spoke stays with the triangles before it.
     const std::vector<Index> group(fan.tris.begin() + iC, fan.tris.end());
     std::vector<Index> touched;
-    const Index q = detachGroup(c, p, group, cut, touched);
+    const Index q = detachGroup(c, p, group, std::span<const Index>(&cut, 1), touched);
     addFanTriangles(c, p, touched);
     addFanTriangles(c, farEnd, touched);
     const Index holder = iT >= iC ? q : p;
@@ -254,7 +181,7 @@ bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext&
     Index holder = p;
     for (size_t f = 1; f < fans.size(); ++f) {
         const bool holds = std::find(fans[f].spokes.begin(), fans[f].spokes.end(), sT) != fans[f].spokes.end();
-        const Index q = detachGroup(c, p, fans[f].tris, kNone, touched);
+        const Index q = detachGroup(c, p, fans[f].tris, {}, touched);
         if (holds) holder = q;
         if (ctx.copies) ctx.copies->emplace_back(p, q);
     }
@@ -291,17 +218,6 @@ bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force, float scanSt
     return false;
 }
 
-void validateAfterTear(const Cloth& c, const TearContext& ctx) {
-#if CLOTHTEAR_VALIDATE_TEARS
-    const bool always = true;
-#else
-    const bool always = false;
-#endif
-    if (!always && !ctx.settings.validate) return;
-    const std::string err = validateCloth(c);
-    if (!err.empty() && ctx.log && ctx.log->validationError.empty()) ctx.log->validationError = err;
-}
-
 } // namespace
 
 int tearSprings(Cloth& c, std::vector<TearCandidate>& candidates, const TearContext& ctx) {
@@ -325,7 +241,7 @@ int tearSprings(Cloth& c, std::vector<TearCandidate>& candidates, const TearCont
         if (s == kNone) continue;
         if (tearOne(c, s, ctx, false, e.strain)) {
             ++tears;
-            validateAfterTear(c, ctx);
+            validateAfterChange(c, ctx.settings, ctx.log);
         }
     }
     return tears;
@@ -334,7 +250,7 @@ int tearSprings(Cloth& c, std::vector<TearCandidate>& candidates, const TearCont
 bool forceTear(Cloth& c, Index s, const TearContext& ctx) {
     if (s >= c.springs.size()) return false;
     const bool torn = tearOne(c, s, ctx, true, 0.f);
-    if (torn) validateAfterTear(c, ctx);
+    if (torn) validateAfterChange(c, ctx.settings, ctx.log);
     return torn;
 }
 

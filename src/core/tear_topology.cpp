@@ -1,6 +1,8 @@
 // Local topology helpers for tearing (see tear_topology.h).
 #include "tear_topology.h"
 
+#include "clothtear/tear.h"
+
 #include <algorithm>
 
 namespace clothtear {
@@ -159,6 +161,104 @@ void replaceIn(std::vector<Index>& list, Index from, Index to) {
 }
 void eraseFrom(std::vector<Index>& list, Index value) {
     list.erase(std::remove(list.begin(), list.end(), value), list.end());
+}
+
+SplitEnds splitSpring(Cloth& c, Index s, double t, bool separate, std::vector<Index>& touched) {
+    const Spring sp = c.springs[s];
+    const SpringTopo topo = c.springTopo[s];
+    const Index a = sp.a, b = sp.b;
+    if (topo.bend != kNone) removeBendSpring(c, topo.bend);
+    // (1 - t) a + t b: at t = 1/2 the same bits as (a + b) / 2, so the basic tear is unchanged by
+    // sharing this code (halving is exact in binary floating point).
+    const Vec3d restM = (1.0 - t) * c.rest[a] + t * c.rest[b];
+    const Index ma = appendParticleCopy(c, a), mb = separate ? appendParticleCopy(c, b) : ma;
+    c.rest[ma] = c.rest[mb] = restM;
+    c.flags[ma] = c.flags[mb] = 0; // new points are never pinned
+    if (!separate) {
+        c.x[ma] = ((1.0 - t) * c.x[a].cast<double>() + t * c.x[b].cast<double>()).cast<float>();
+        c.v[ma] = ((1.0 - t) * c.v[a].cast<double>() + t * c.v[b].cast<double>()).cast<float>();
+    }
+    // Reuse s as the half a-ma; append the half mb-b.
+    c.springs[s] = Spring{a, ma, float(t * double(sp.rest)), 0.f};
+    c.springTopo[s] = SpringTopo{};
+    const Index hb = appendSpring(c, mb, b, (1.0 - t) * sp.rest);
+    for (Index tri : topo.tri) {
+        if (tri == kNone) continue;
+        const Triangle T = c.triangles[tri];
+        const int i = edgeSlotOf(T, s);
+        const Index P = T.p[i], Q = T.p[(i + 1) % 3], C = T.p[(i + 2) % 3];
+        const Index sQC = T.s[(i + 1) % 3], sCP = T.s[(i + 2) % 3];
+        const bool pIsA = (P == a);
+        const double tP = pIsA ? t : 1.0 - t; // from P towards Q
+        const Vec2d uvM = (1.0 - tP) * T.uv[i] + tP * T.uv[(i + 1) % 3];
+        const Index mP = pIsA ? ma : mb, mQ = pIsA ? mb : ma;
+        const Index hP = pIsA ? s : hb, hQ = pIsA ? hb : s;
+        const double divider = (c.rest[C] - restM).norm();
+        const Index dP = appendSpring(c, mP, C, divider);
+        const Index dQ = separate ? appendSpring(c, mQ, C, divider) : dP;
+        const Index tq = Index(c.triangles.size());
+        // P-side part stays in slot tri, Q-side part is appended.
+        c.triangles[tri] = Triangle{{P, mP, C}, {hP, dP, sCP}, {T.uv[i], uvM, T.uv[(i + 2) % 3]}, tP * T.restArea};
+        c.triangles.push_back(Triangle{
+            {mQ, Q, C}, {hQ, sQC, dQ}, {uvM, T.uv[(i + 1) % 3], T.uv[(i + 2) % 3]}, (1.0 - tP) * T.restArea});
+        topoAddTriangle(c.springTopo[hP], tri);
+        topoAddTriangle(c.springTopo[hQ], tq);
+        topoAddTriangle(c.springTopo[dP], tri);
+        topoAddTriangle(c.springTopo[dQ], tq);
+        topoReplaceTriangle(c.springTopo[sQC], tri, tq);
+        replaceIn(c.particleTris[Q], tri, tq);
+        c.particleTris[C].push_back(tq);
+        c.particleTris[mP].push_back(tri);
+        c.particleTris[mQ].push_back(tq);
+        touched.push_back(tri);
+        touched.push_back(tq);
+    }
+    return {ma, mb};
+}
+
+Index detachGroup(Cloth& c, Index p, const std::vector<Index>& group, std::span<const Index> sharedSpokes,
+                  std::vector<Index>& touched) {
+    const Index q = appendParticleCopy(c, p);
+    for (const Index shared : sharedSpokes) {
+        const Spring old = c.springs[shared];
+        const Index far = otherEnd(old, p);
+        const Index copy = appendSpring(c, q, far, old.rest);
+        for (Index t : group) {
+            Triangle& T = c.triangles[t];
+            const int slot = edgeSlotOf(T, shared);
+            if (slot < 0) continue;
+            T.s[slot] = copy;
+            topoRemoveTriangle(c.springTopo[shared], t);
+            topoAddTriangle(c.springTopo[copy], t);
+        }
+    }
+    for (Index t : group) {
+        Triangle& T = c.triangles[t];
+        const int corner = cornerOf(T, p);
+        T.p[corner] = q;
+        // The two springs of T at this corner now start at q (unless already moved or the copy).
+        for (Index s : {T.s[corner], T.s[(corner + 2) % 3]}) {
+            Spring& sp = c.springs[s];
+            if (sp.a == p) sp.a = q;
+            else if (sp.b == p) sp.b = q;
+        }
+        eraseFrom(c.particleTris[p], t);
+        c.particleTris[q].push_back(t);
+        touched.push_back(t);
+    }
+    if (c.pinned(p)) c.setPinned(q, true);
+    return q;
+}
+
+void validateAfterChange(const Cloth& c, const TearSettings& settings, TearLog* log) {
+#if CLOTHTEAR_VALIDATE_TEARS
+    const bool always = true;
+#else
+    const bool always = false;
+#endif
+    if (!always && !settings.validate) return;
+    const std::string err = validateCloth(c);
+    if (!err.empty() && log && log->validationError.empty()) log->validationError = err;
 }
 
 void refreshAround(Cloth& c, const std::vector<Index>& triangles) {

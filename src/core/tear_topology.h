@@ -2,7 +2,10 @@
 // the bookkeeping that follows a local change. Internal to the core.
 #pragma once
 #include "clothtear/cloth.h"
+#include "clothtear/settings.h"
+#include "clothtear/tear_events.h"
 
+#include <span>
 #include <vector>
 
 namespace clothtear {
@@ -41,6 +44,31 @@ void topoRemoveTriangle(SpringTopo& topo, Index t);
 void topoReplaceTriangle(SpringTopo& topo, Index from, Index to);
 void replaceIn(std::vector<Index>& list, Index from, Index to);
 void eraseFrom(std::vector<Index>& list, Index value);
+
+// The split of a structural spring s = (a, b) at the fraction t from a (0 < t < 1): both neighbour
+// triangles are cut from the new point m to their opposite corner (the diagram of the basic tear in
+// tear.cpp). `separate`: a and b each get their own copy of m (ma, mb) and each side its own divider,
+// so the two halves move apart (the basic tear, t = 1/2, Onal 3.2.1); otherwise one particle m and one
+// divider per triangle keep the cloth whole (the knife refines the mesh this way before it cuts
+// along the new edges). Rest areas split as t : 1 - t and corner UVs are interpolated at t, so the
+// total rest area and UV area stay as they were (3.3). The new particles are unpinned; m's position
+// and velocity are interpolated at t (so momentum is kept); ma and mb start as copies of a and b for
+// the caller to place. The triangles changed are appended to `touched`; call refreshAround after.
+struct SplitEnds {
+    Index onA, onB; // the new particle on a's side and on b's side (the same one when not separated)
+};
+SplitEnds splitSpring(Cloth& cloth, Index s, double t, bool separate, std::vector<Index>& touched);
+
+// Moves the triangles `group` of particle p's fan onto a new copy of p (Onal 3.2.2-3.2.3). Spokes
+// that belong only to those triangles move with them; each of `sharedSpokes` is a spoke between the
+// group and the rest of the fan: it stays with the rest and the group gets its own copy of it. The
+// moved triangles are appended to `touched`. Returns the copy.
+Index detachGroup(Cloth& cloth, Index p, const std::vector<Index>& group, std::span<const Index> sharedSpokes,
+                  std::vector<Index>& touched);
+
+// After a topology change: validateCloth when Debug builds or tear.validate ask for it; the first
+// violation is kept in log->validationError.
+void validateAfterChange(const Cloth& cloth, const TearSettings& settings, TearLog* log);
 
 // After a local change to `triangles`: spring weights and bend-shear springs of their edges, mass
 // shares and inverse masses, and the weak/hinge flags of their corners (and the corners' neighbours'

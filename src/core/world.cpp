@@ -2,6 +2,7 @@
 // step (impulses) or asks of it (energies). The step itself is in src/core/step/ (step.cpp).
 #include "clothtear/world.h"
 
+#include "step/phases.h"
 #include "step/step_state.h"
 
 #include <algorithm>
@@ -22,6 +23,7 @@ std::string World::rebuild(const MeshData& mesh) {
     Result<Cloth> built = buildCloth(mesh, settings.material.density);
     if (!built.ok()) return built.error;
     if (&mesh != &restMesh) restMesh = mesh;
+    restFrame = knifeFrame(restMesh.positions);
     cloth = std::move(built.value);
     state_ = StepStateBox{}; // the caches of the step belong to the old cloth
     // Tilt about the top edge: 0 deg hangs in the x-y plane, 90 deg lies horizontal towards +z.
@@ -91,6 +93,17 @@ void World::pinByMode(PinMode mode) {
         pin(best[0]);
         pin(best[1]);
     }
+}
+
+CutResult World::cut(const std::vector<Vec2d>& stroke) {
+    std::vector<std::pair<Index, Index>> copies;
+    const TearContext ctx{settings.tear, time, &tearLog, &copies};
+    CutResult result = cutAlong(cloth, restFrame, stroke, ctx);
+    if (result.particlesAdded > 0) {
+        driversFollowCopies(drivers, copies);
+        wake();
+    }
+    return result;
 }
 
 int World::applyImpulse(const Vec3& center, float radius, const Vec3& direction, float dv) {

@@ -26,6 +26,9 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state);
 void phaseContact(const StepContext& ctx, Cloth& cloth, StepState& state);
 // tear_phase.cpp: tears the candidates of the scan (the only topology change of the step).
 void phaseTear(const StepContext& ctx, Cloth& cloth, StepState& state);
+// tear_phase.cpp: a particle duplicated by a tear or a cut, (original, copy), keeps following
+// whatever drove the original (World::cut uses it too).
+void driversFollowCopies(std::vector<Driver>& drivers, const std::vector<std::pair<Index, Index>>& copies);
 
 // integrate.cpp: kinematic drivers move their particles at constant velocity.
 void moveDrivers(const StepContext& ctx, Cloth& cloth, StepState& state);

@@ -10,9 +10,12 @@ void phaseTear(const StepContext& ctx, Cloth& cloth, StepState& state) {
     std::vector<std::pair<Index, Index>> copies;
     TearContext tear{ctx.settings->tear, ctx.time, ctx.tearLog, &copies};
     tearSprings(cloth, state.tearCandidates, tear);
-    // A particle duplicated by a tear keeps following whatever drove the original.
+    driversFollowCopies(*ctx.drivers, copies);
+}
+
+void driversFollowCopies(std::vector<Driver>& drivers, const std::vector<std::pair<Index, Index>>& copies) {
     for (const auto& [original, copy] : copies)
-        for (Driver& d : *ctx.drivers)
+        for (Driver& d : drivers)
             if (std::find(d.particles.begin(), d.particles.end(), original) != d.particles.end())
                 d.particles.push_back(copy);
 }
