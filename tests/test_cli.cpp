@@ -10,6 +10,27 @@ using namespace clitest;
 
 namespace {
 
+// --cut: the knife cuts the default curtain (2 m x 2 m) from top to bottom at u = 0.3 m after 0.2 s:
+// two pieces of 1.3 and 0.7 of its 4 m^2 (within two triangles), every knife event at 0.2 s on the
+// line, counted in the report.
+TEST_F(CliTest, CutSplitsTheCurtainInTwoAtItsTime) {
+    const RunResult r = run("--headless --scene curtain --seconds 0.5 --cut '0.2:0.3,1.5;0.3,-1.5' --json -");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["knife"]["cuts"], 1);
+    EXPECT_GE(j["knife"]["springs"].get<int>(), 39) << "an edge a row at least";
+    EXPECT_EQ(j["tears"]["knife"], j["knife"]["springs"]);
+    ASSERT_EQ(j["pieces"]["count"], 2) << j["pieces"].dump();
+    const double triangle = 4.0 / (39 * 39 * 2);
+    EXPECT_NEAR(j["pieces"]["areas"][0].get<double>(), 2.6, 2 * triangle);
+    EXPECT_NEAR(j["pieces"]["areas"][1].get<double>(), 1.4, 2 * triangle);
+    for (const auto& e : j["tear_events"]) {
+        if (e["mode"] != "knife") continue;
+        EXPECT_NEAR(e["time"].get<double>(), 0.2, 1.0 / 60) << e.dump();
+        EXPECT_NEAR(e["rest"][0].get<double>(), 0.3, 0.01) << e.dump();
+    }
+}
+
 TEST_F(CliTest, UnknownParameterIsRefused) {
     const std::string args = "--headless --seconds 0.1 --set nope=1";
     expectRefused(run(args), args, {"nope", "unknown parameter"});

@@ -107,6 +107,31 @@ TEST_F(BadInput, CommandLineValuesCli11Checks) {
         expectRefused(run(args), args, {"--help"});
 }
 
+// --cut (the knife, knife.h): not numbers, not two numbers a point, one point, not finite, no
+// length, a bad time or one after the run's end. One line each, before any work.
+TEST_F(BadInput, CutStrokesThatAreNoCut) {
+    const struct {
+        const char* cut;
+        const char* says;
+    } cases[] = {
+        {"'0.1,0.2'", "--cut '0.1,0.2': a cut needs at least two points (got 1)"},
+        {"'a,0;1,1'", "point 1: 'a' is not a number"},
+        {"'0,0;1,2,3'", "point 2 '1,2,3' is not two numbers U,V"},
+        {"'0,0;;1,1'", "point 2 '' is not two numbers U,V"},
+        {"'0,nan;0,1'", "point 1 of the cut is not a finite number"},
+        {"'0,0;1e999,0'", "point 2: '1e999' is not a number"},
+        {"'0,0;2e5,0'", "point 2 of the cut is beyond +-1e5 m"},
+        {"'0.3,0.3;0.3,0.3'", "the cut has no length"},
+        {"'x:0,1;0,-1'", "'x' is not a time in seconds"},
+        {"'-1:0,1;0,-1'", "'-1' is not a time in seconds"},
+        {"'9:0,1;0,-1'", "at 9 s, after the end of the run (--seconds 0.2)"},
+    };
+    for (const auto& c : cases) {
+        const std::string args = std::string("--headless --scene curtain --seconds 0.2 --cut ") + c.cut;
+        expectRefused(run(args), args, {c.says});
+    }
+}
+
 TEST_F(BadInput, ConfigFileErrorsNameFileAndLine) {
     const std::string missing = (dir / "missing.cfg").string();
     expectRefused(run("--headless --config '" + missing + "'"), "missing config",

@@ -31,8 +31,9 @@ struct TearLog {
         counts[int(e.mode)]++;
         if (events.size() < maxEvents) events.push_back(e);
     }
-    // Tears by the physics; the knife's cut springs are counts[Knife], apart.
-    uint64_t total() const { return counts[0] + counts[1] + counts[2]; }
+    // Every event, the knife's cut springs included (each changed the topology: undo groups count
+    // them); counts[] tells the physics' tears from the knife's.
+    uint64_t total() const { return counts[0] + counts[1] + counts[2] + counts[3]; }
 };
 
 } // namespace clothtear

@@ -14,6 +14,10 @@ namespace clothtear {
 // Runs options.scene for options.seconds with no window and writes the report. Exit status.
 int runHeadless(const RunOptions& options);
 
+// Applies the cuts of `cuts` from `next` on whose time has come (the world's time plus half a frame:
+// between frames, never inside one), advancing `next`. Both front ends call it before each frame.
+void applyDueCuts(World& world, const std::vector<CutRequest>& cuts, size_t& next);
+
 // The report of a finished run (see README for the fields).
 nlohmann::json makeReport(const World& world, const std::string& scene, double wallSeconds);
 

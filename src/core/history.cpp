@@ -66,6 +66,7 @@ void visitState(W& w, S& carry, F& f) {
     f.value(w.profile);
     f.array(w.tearLog.events);
     f.value(w.tearLog.counts);
+    f.value(w.tearLog.knifeCuts);
     f.value(w.tearLog.maxEvents);
     f.string(w.tearLog.validationError);
     f.value(w.time);
@@ -83,6 +84,7 @@ void visitState(W& w, S& carry, F& f) {
     f.array(w.restMesh.positions);
     f.array(w.restMesh.triangles);
     f.array(w.restMesh.cornerUVs);
+    f.value(w.restFrame);
     f.value(carry.verletRunning);
     f.array(carry.verletKick);
     f.value(carry.sleep.restSince);

@@ -2,14 +2,62 @@
 #include "run_options.h"
 
 #include "clothtear/config_file.h"
+#include "clothtear/knife.h"
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 
 namespace clothtear {
+namespace {
+
+// A plain decimal number ("nan" and "inf" pass here and are refused by checkStroke, which says so).
+bool number(std::string_view text, double& out) {
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+    return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+}
+
+} // namespace
+
+Result<CutRequest> parseCut(const std::string& text) {
+    CutRequest cut;
+    cut.text = text;
+    std::string_view points = text;
+    if (const size_t colon = points.find(':'); colon != std::string_view::npos) {
+        const std::string_view t = points.substr(0, colon);
+        if (!number(t, cut.time) || !std::isfinite(cut.time) || cut.time < 0)
+            return Result<CutRequest>::failure("'" + std::string(t) + "' is not a time in seconds (>= 0) before ':'");
+        points.remove_prefix(colon + 1);
+    }
+    for (size_t k = 1; !points.empty() || k == 1; ++k) {
+        const size_t semi = points.find(';');
+        const std::string_view point = points.substr(0, semi);
+        points = semi == std::string_view::npos ? std::string_view() : points.substr(semi + 1);
+        const size_t comma = point.find(',');
+        Vec2d p;
+        if (comma == std::string_view::npos || point.find(',', comma + 1) != std::string_view::npos)
+            return Result<CutRequest>::failure("point " + std::to_string(k) + " '" + std::string(point) +
+                                               "' is not two numbers U,V");
+        for (int i = 0; i < 2; ++i) {
+            const std::string_view v = i == 0 ? point.substr(0, comma) : point.substr(comma + 1);
+            if (!number(v, p[i]))
+                return Result<CutRequest>::failure("point " + std::to_string(k) + ": '" + std::string(v) +
+                                                   "' is not a number");
+        }
+        cut.stroke.push_back(p);
+    }
+    if (std::string err = checkStroke(cut.stroke); !err.empty()) return Result<CutRequest>::failure(err);
+    Result<CutRequest> r;
+    r.value = std::move(cut);
+    return r;
+}
 
 int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
     try {
@@ -66,6 +114,10 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
                    "Start from the world file FILE (saved with --save or the panel) instead of building a scene; "
                    "--set applies on top, except parameters that rebuild the cloth");
     app.add_option("--save", o.save, "At the end, write the whole world to FILE (a world file --load continues exactly)");
+    std::vector<std::string> cuts;
+    app.add_option("--cut", cuts,
+                   "Cut the cloth with the knife along U,V;U,V;... (metres in the mesh's own plane from its middle, "
+                   "U right, V up), at T seconds with a T: prefix (repeatable; quote the ';')");
     app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");
@@ -127,6 +179,21 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
         std::cerr << "clothtear: --scene: " << scene.error << "\n";
         return 2;
     }
+    for (const std::string& text : cuts) {
+        Result<CutRequest> cut = parseCut(text);
+        if (!cut.ok()) {
+            std::cerr << "clothtear: --cut '" << text << "': " << cut.error << "\n";
+            return 2;
+        }
+        // A headless run ends at --seconds: a cut after that would silently never happen.
+        if (o.headless && cut.value.time > o.seconds) {
+            std::cerr << "clothtear: --cut '" << text << "': at " << cut.value.time << " s, after the end of the run (--seconds "
+                      << o.seconds << ")\n";
+            return 2;
+        }
+        o.cuts.push_back(std::move(cut.value));
+    }
+    std::stable_sort(o.cuts.begin(), o.cuts.end(), [](const CutRequest& a, const CutRequest& b) { return a.time < b.time; });
     // Check every --set now, so bad input fails before any work with one clear message.
     Settings probe;
     for (const std::string& s : o.sets)

@@ -1,7 +1,7 @@
 // Run options: the command line every `clothtear` shares, with or without the window app.
 //
 //   --headless --scene NAME --mesh OBJ --seconds S --export-obj FILE --set key=value --config FILE --json FILE
-//   --load FILE --save FILE --list-scenes --list-params --version --help
+//   --load FILE --save FILE --cut [T:]U,V;U,V;... --list-scenes --list-params --version --help
 //
 // parseRunOptions reads them with CLI11, answers --help, --version and the lists, folds the config
 // file in (the command line wins over it) and checks every --set, so bad input fails before any work
@@ -9,6 +9,8 @@
 // registers them through RunOptionsExtension; this library and the headless runner know nothing of
 // them, and a build without the app does not list them (CLI11 refuses them as unknown).
 #pragma once
+#include "clothtear/types.h"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -18,6 +20,18 @@ class App;
 }
 
 namespace clothtear {
+
+// One --cut: a knife stroke (knife.h) applied between frames once the run reaches `time`.
+struct CutRequest {
+    double time = 0;            // s, simulated (the T: prefix; 0: before the first frame)
+    std::vector<Vec2d> stroke;  // m: points (u, v) in the mesh's knifeFrame (u right, v up, from the
+                                // middle of its extent; the built-in meshes: x and y)
+    std::string text;           // as given, for messages
+};
+
+// Parses "[T:]U,V;U,V;...": every number a plain decimal (a point per ';', two numbers per point),
+// then checkStroke (knife.h). The error names what was wrong, without the option's name.
+Result<CutRequest> parseCut(const std::string& text);
 
 struct RunOptions {
     bool headless = false;         // --headless: no window; run, then print or write the report
@@ -29,6 +43,7 @@ struct RunOptions {
     std::string exportObj;         // --export-obj FILE: the cloth as it ends, torn, as OBJ with UVs
     std::string load;              // --load FILE: start from a world file (world_file.h), not the scene
     std::string save;              // --save FILE: the world as it ends, as a world file
+    std::vector<CutRequest> cuts;  // --cut, repeatable, in order of time (equal times as given)
     bool listScenes = false;
     bool listParams = false;
     bool version = false;
