@@ -72,6 +72,7 @@ private:
     InputScript recorded_;
     bool lockstep_ = false; // one simulation step per displayed frame (replays, --frames, recording)
     nlohmann::json loaded_; // the report's "loaded" field after a world file was loaded (runner.h)
+    size_t nextCut_ = 0;    // the next of options_.cuts to apply (runner.h applyDueCuts)
     // mouse ownership: a press that ImGui took stays ImGui's until released
     std::array<bool, 3> uiOwnsButton_{};
     float lastMouseX_ = 0.f, lastMouseY_ = 0.f;

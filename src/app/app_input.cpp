@@ -141,6 +141,10 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
                 case Tool::Pin:
                     togglePinAt(world_, view, cursor);
                     break;
+                case Tool::Knife:
+                    rewind_.gestureStarted(world_, true); // Ctrl+Z sews the stroke's cut back
+                    knifeBegin(world_, state_.knife, view, cursor);
+                    break;
                 case Tool::Count: break;
                 }
             } else if (e.code == 1) {
@@ -159,6 +163,7 @@ void App::handleEvents(bool uiMouse, bool uiKeyboard) {
             if (e.code == 0) {
                 if (state_.drag.active()) releaseDrag(world_, state_.drag, false);
                 state_.windBlowing = false;
+                knifeEnd(state_.knife);
                 rewind_.gestureEnded(world_);
             } else if (e.code == 1) {
                 // A right click without dragging reverses the impulse tool (Keserica 5.2.1).
@@ -196,6 +201,7 @@ void App::handleKey(int key, bool uiKeyboard) {
         const Tool next = Tool(key - keys::Num1);
         if (next != Tool::Drag) releaseDrag(world_, state_.drag, false);
         if (next != Tool::Wind) state_.windBlowing = false;
+        if (next != Tool::Knife) knifeEnd(state_.knife);
         state_.tool = next;
         return;
     }
@@ -264,6 +270,8 @@ void App::handleContinuous(float seconds, bool uiKeyboard) {
     const View view = currentView();
     const Vec2 cursor(input_.mouseX, input_.mouseY);
     moveDrag(state_.drag, view, cursor);
+    // Between frames (the step runs after this): the stroke since the last frame is cut now.
+    if (state_.knife.held && knifeMove(world_, state_.knife, view, cursor) > 0) state_.pieces = PiecesSummary{};
     if (state_.windBlowing && !state_.tools.windFixed) state_.windSource = windSourceAt(view, cursor);
 }
 

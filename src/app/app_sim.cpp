@@ -90,6 +90,7 @@ void App::stepOnce() {
     if (state_.tools.windFixed || (state_.windBlowing && state_.tool == Tool::Wind))
         applyWind(world_, state_.windSource, state_.tools.radiusPx, state_.tools.windPressure,
                   world_.settings.time.frameDt);
+    applyDueCuts(world_, options_.cuts, nextCut_); // --cut strokes whose time has come
     const auto start = std::chrono::steady_clock::now();
     world_.step();
     state_.clock.reportStepCost(
@@ -101,6 +102,7 @@ void App::stepOnce() {
 
 void App::afterRestore(const std::string& message) {
     state_.drag = DragState{}; // the restored pins are the world's own: nothing to give back
+    knifeEnd(state_.knife);
     state_.windBlowing = false;
     state_.ballFlags.assign(world_.balls.size(), kBallThrown | kBallTouched);
     state_.pieces = PiecesSummary{};

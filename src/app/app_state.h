@@ -69,6 +69,7 @@ struct AppState {
     Tool tool = Tool::Drag;
     ToolSettings tools;
     DragState drag;
+    KnifeState knife;
     PiecesSummary pieces;
     WindSource windSource;    // where the wind tool blows (follows the cursor unless fixed)
     bool windBlowing = false; // the wind tool's button is held

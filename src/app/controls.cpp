@@ -5,14 +5,15 @@ namespace clothtear::app {
 
 namespace {
 const ControlHelp kControls[] = {
-    {"Left button", "Use the active tool (Drag, Wind, Impulse, Ball, Pin)"},
-    {"1 2 3 4 5", "Tool: Drag / Wind / Impulse / Ball / Pin"},
+    {"Left button", "Use the active tool (Drag, Wind, Impulse, Ball, Pin, Knife)"},
+    {"1 2 3 4 5 6", "Tool: Drag / Wind / Impulse / Ball / Pin / Knife"},
     {"Drag tool", "Left drag pulls the cloth under the cursor (a patch of grab.radius); pull hard to tear"},
     {"X (while dragging)", "Pin the grabbed particle where it is and let go"},
     {"Wind tool", "Hold left to blow along the view; wheel = strength; L fixes the source"},
     {"Impulse tool", "Left click pushes away, right click pulls towards you"},
     {"Ball tool", "Left click throws a ball through the cursor; B clears balls"},
     {"Pin tool", "Left click pins / unpins the particle under the cursor"},
+    {"Knife tool", "Hold left and draw across the cloth: it is cut along the stroke as you go"},
     {"Right drag", "Orbit the camera"},
     {"Middle drag", "Pan the camera"},
     {"Wheel", "Zoom (Ctrl+wheel with the wind tool)"},
@@ -41,7 +42,7 @@ std::span<const ControlHelp> controlsHelp() { return kControls; }
 
 const char* startHint() {
     return "Left drag: pull and tear    Right drag: orbit    Wheel: zoom\n"
-           "1-5: tools (4 throws balls)    F1: all controls";
+           "1-6: tools (4 throws balls, 6 cuts)    F1: all controls";
 }
 
 } // namespace clothtear::app

@@ -68,6 +68,12 @@ void toolOptions(AppState& st, World& world) {
     case Tool::Pin:
         ImGui::TextWrapped("Left click pins or unpins the particle under the cursor.");
         break;
+    case Tool::Knife:
+        ImGui::TextWrapped("Hold left and draw across the cloth: it is cut along the stroke, following the "
+                           "cloth as it moves. Ctrl+Z sews a stroke back.");
+        ImGui::Text("knife: %llu strokes, %llu springs cut", (unsigned long long)world.tearLog.knifeCuts,
+                    (unsigned long long)world.tearLog.counts[int(TearMode::Knife)]);
+        break;
     case Tool::Count: break;
     }
 }
@@ -420,6 +426,11 @@ void drawToolHud(const AppState& st, const World& world, const View& view, float
         const Vec2& c = st.windSource.center;
         dl->AddCircle(ImVec2(c.x(), c.y()), st.tools.radiusPx, wind, 48, 2.5f);
         dl->AddText(ImVec2(c.x() - 18.f, c.y() - 6.f), wind, "wind");
+    }
+    if (st.knife.trail.size() > 1) { // the stroke while the knife is held, a thin line
+        std::vector<ImVec2> points;
+        for (const Vec2& p : st.knife.trail) points.emplace_back(p.x(), p.y());
+        dl->AddPolyline(points.data(), int(points.size()), IM_COL32(250, 250, 255, 220), ImDrawFlags_None, 1.5f);
     }
     if (st.drag.active() && st.drag.particle < world.cloth.particleCount()) {
         Vec2 a, b;

@@ -9,7 +9,7 @@
 namespace clothtear::app {
 
 const char* toolName(Tool tool) {
-    static const char* names[] = {"Drag", "Wind", "Impulse", "Ball", "Pin"};
+    static const char* names[] = {"Drag", "Wind", "Impulse", "Ball", "Pin", "Knife"};
     return names[int(tool)];
 }
 
@@ -216,6 +216,60 @@ Index togglePinAt(World& world, const View& view, const Vec2& cursor) {
     world.cloth.setPinned(p, !world.cloth.pinned(p));
     if (world.cloth.pinned(p)) world.cloth.v[p].setZero();
     return p;
+}
+
+// ========================================================================================= knife
+
+bool restPointUnder(const World& world, const View& view, const Vec2& cursor, Vec2d& point) {
+    const TriangleHit hit = pickTriangle(world.cloth, view.rayAt(cursor));
+    if (!hit.hit()) return false;
+    const Triangle& t = world.cloth.triangles[hit.triangle];
+    const double b1 = hit.b1, b2 = hit.b2;
+    const Vec3d rest = (1.0 - b1 - b2) * world.cloth.rest[t.p[0]] + b1 * world.cloth.rest[t.p[1]] + b2 * world.cloth.rest[t.p[2]];
+    point = Vec2d(world.restFrame.u(rest), world.restFrame.v(rest));
+    return true;
+}
+
+void knifeBegin(const World& world, KnifeState& knife, const View& view, const Vec2& cursor) {
+    knife = KnifeState{};
+    knife.held = true;
+    knife.trail.push_back(cursor);
+    knife.onCloth = restPointUnder(world, view, cursor, knife.last);
+    knife.fromOutside = !knife.onCloth;
+}
+
+size_t knifeMove(World& world, KnifeState& knife, const View& view, const Vec2& cursor) {
+    if (!knife.held) return 0;
+    if ((knife.trail.back() - cursor).norm() >= 1.f) knife.trail.push_back(cursor);
+    const MeshFrame& f = world.restFrame;
+    const double reach = f.width() + f.height(); // from any point of the cloth past its edge
+    Vec2d p;
+    const bool hit = restPointUnder(world, view, cursor, p);
+    std::vector<Vec2d> stroke;
+    if (hit && !knife.onCloth) { // onto the cloth: the direction comes with the next point
+        knife.last = p, knife.onCloth = true, knife.fromOutside = true, knife.direction.setZero();
+        return 0;
+    }
+    if (!hit) { // off the cloth (or still off): carry the stroke on to the edge once
+        if (knife.onCloth && knife.direction.squaredNorm() > 0) stroke = {knife.last, knife.last + reach * knife.direction};
+        knife.onCloth = false;
+    } else {
+        const Vec2d step = p - knife.last;
+        if (step.norm() <= 1e-6 * reach) return 0; // not moved on the material (snapping would make it nothing)
+        knife.direction = step.normalized();
+        stroke = {knife.fromOutside ? Vec2d(knife.last - reach * knife.direction) : knife.last, p};
+        knife.fromOutside = false;
+        knife.last = p;
+    }
+    if (stroke.empty()) return 0;
+    const size_t cut = world.cut(stroke).springsCut;
+    knife.springsCut += cut;
+    return cut;
+}
+
+void knifeEnd(KnifeState& knife) {
+    knife.held = false;
+    knife.trail.clear();
 }
 
 } // namespace clothtear::app

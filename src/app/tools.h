@@ -1,4 +1,4 @@
-// The interaction tools (Keserica ch. 5): drag, wind, impulse, ball, pin. They act on the World through
+// The interaction tools (Keserica ch. 5): drag, wind, impulse, ball, pin; and the knife (Onal 5.2). They act on the World through
 // its public state (positions, velocities, pins, drivers, balls); no GL here, so they are unit-testable.
 //
 // Handles: a tool that holds a particle keeps its index, which stays valid because tearing only
@@ -11,7 +11,7 @@
 
 namespace clothtear::app {
 
-enum class Tool : int { Drag = 0, Wind, Impulse, Ball, Pin, Count };
+enum class Tool : int { Drag = 0, Wind, Impulse, Ball, Pin, Knife, Count };
 const char* toolName(Tool tool);
 
 struct ToolSettings {
@@ -95,5 +95,28 @@ Throw throwBall(const World& world, const View& view, const Vec2& cursor);
 bool ballisticVelocity(const Vec3& from, const Vec3& to, const Vec3& g, float speed, Vec3& velocity, float& minSpeed);
 // Toggles the pin of the particle under the cursor; returns it, or kNone when nothing is hit.
 Index togglePinAt(World& world, const View& view, const Vec2& cursor);
+
+// ---- knife -------------------------------------------------------------------------------------------
+// While the left button is held, the stroke follows the cloth under the cursor, read back to rest
+// space through the hit triangle's barycentric coordinates: it follows the material when the cloth is
+// folded or moving. Each frame cuts the stroke since the last one (World::cut, between frames), so a
+// long stroke cuts as it goes. A stroke that comes onto the cloth from outside, or leaves it, is
+// carried on in rest space to the cloth's edge (a cut from outside to outside cuts through). Holds
+// rest coordinates, not particles: a tear, an undo or a cut never leaves it pointing elsewhere.
+struct KnifeState {
+    bool held = false;               // the left button is down with the knife
+    bool onCloth = false;            // the last cursor position was over the cloth
+    bool fromOutside = false;        // came onto the cloth from outside: the next cut reaches back to the edge
+    Vec2d last = Vec2d::Zero();      // m, the stroke's last point on the cloth in world.restFrame
+    Vec2d direction = Vec2d::Zero(); // unit, the stroke's direction there (zero before it moved)
+    std::vector<Vec2> trail;         // window positions of the stroke, drawn as a thin line
+    size_t springsCut = 0;           // by this stroke
+};
+// The rest-frame point (knife.h) of the cloth under the cursor; false over no cloth.
+bool restPointUnder(const World& world, const View& view, const Vec2& cursor, Vec2d& point);
+void knifeBegin(const World& world, KnifeState& knife, const View& view, const Vec2& cursor);
+// Once a frame while held: cuts from the last point to the one under the cursor. Springs cut.
+size_t knifeMove(World& world, KnifeState& knife, const View& view, const Vec2& cursor);
+void knifeEnd(KnifeState& knife);
 
 } // namespace clothtear::app

@@ -131,6 +131,21 @@ TEST(AppWindow, ReplayedDragTearsTheCloth) {
     EXPECT_EQ(again["particles"], report["particles"]);
 }
 
+// The knife by its hotkey (6), drawn in a script from above the curtain to below it: two pieces,
+// each a sizeable part of the 4 m^2 (the stroke is at about three fifths of the width), counted.
+TEST(AppWindow, KnifeScriptCutsTheCurtainInTwo) {
+    REQUIRE_XVFB();
+    const fs::path json = tempDir() / "knife.json";
+    AppRun r = runApp("--scene curtain --script '" + data("knife_cut.txt") + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto report = readJson(json);
+    EXPECT_EQ(report["pieces"]["count"], 2) << report["pieces"].dump();
+    EXPECT_GT(report["pieces"]["smallest_area"].get<double>(), 1.0);
+    EXPECT_GE(report["knife"]["cuts"].get<int>(), 1);
+    EXPECT_GE(report["knife"]["springs"].get<int>(), 39) << "an edge a row at least";
+    EXPECT_EQ(report["validation_error"], "");
+}
+
 TEST(AppWindow, ReplayedBallThrowHitsTheCloth) {
     REQUIRE_XVFB();
     const fs::path json = tempDir() / "ball.json";
