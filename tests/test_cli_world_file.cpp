@@ -1,6 +1,7 @@
 // --save and --load through the `clothtear` binary (docs/world-file.md): a run saved and continued
 // ends where one uninterrupted run ends; bad files and bad combinations get one line and status 2
 // before any work.
+#include "clothtear/world_file.h"
 #include "cli_harness.h"
 
 #include <nlohmann/json.hpp>
@@ -37,7 +38,7 @@ TEST_F(CliWorldFile, SavedAndContinuedRunEndsWhereOneRunEnds) {
     EXPECT_EQ(second["loaded"]["file"], saved);
     EXPECT_EQ(second["loaded"]["steps"], 90);
     EXPECT_EQ(second["loaded"]["state_hash"], first["state_hash"]) << "the loaded world is the saved one";
-    EXPECT_EQ(second["loaded"]["format_version"], 1);
+    EXPECT_EQ(second["loaded"]["format_version"], clothtear::kWorldFileVersion);
 }
 
 // --set applies on top of the file (here: wind, which changes the continuation), except parameters

@@ -1,5 +1,6 @@
 // World files (world_file.h): a saved world continues bit for bit, and every bad file is refused
 // with one line naming the file, the byte and the section (docs/world-file.md, docs/bad-input.md).
+#include "clothtear/knife.h"
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
@@ -286,10 +287,10 @@ TEST(WorldFileErrors, WrongMagicAndVersions) {
     std::string bytes = bytesOf(smallTornWorld());
     EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
               "bad.ctw: byte 0 (header): not a clothtear world file (it does not start with 'clothtear world\\x0a')");
-    poke<uint32_t>(bytes, 16, 2);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 2: written by a newer clothtear; this one reads version 1");
-    poke<uint32_t>(bytes, 16, 0);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 0 (this clothtear reads version 1)");
+    poke<uint32_t>(bytes, 16, 3);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 3: written by a newer clothtear; this one reads version 2");
+    poke<uint32_t>(bytes, 16, 1);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads version 2)");
 }
 
 TEST(WorldFileErrors, CountsThatLieAllocateNothing) {
@@ -391,4 +392,21 @@ TEST(WorldFileErrors, SettingsGoThroughTheParameterTable) {
     ASSERT_TRUE(few.ok()) << few.error;
     EXPECT_EQ(few.value.settings.tear.threshold, 0.3f);
     EXPECT_EQ(few.value.settings.time.substeps, Settings{}.time.substeps);
+}
+
+// A cloth cut by the knife (version 2): the knife's tear count and strokes come back, the rest frame
+// of later strokes is the same, and a second cut after the load cuts both copies alike.
+TEST(WorldFile, AKnifeCutClothContinuesAndCutsAlike) {
+    World w;
+    const std::vector<std::string> sets{"cloth.resolution_x=12", "cloth.resolution_y=12"};
+    ASSERT_EQ(loadScene(w, "curtain", sets), "");
+    for (int f = 0; f < 5; ++f) w.step();
+    ASSERT_GT(w.cut({Vec2d(-0.3, 2.0), Vec2d(-0.3, 0.0)}).springsCut, 0u);
+    World copy = reloaded(w);
+    EXPECT_EQ(copy.tearLog.counts, w.tearLog.counts);
+    EXPECT_EQ(copy.tearLog.knifeCuts, 1u);
+    const std::vector<Vec2d> second{Vec2d(0.4, 2.0), Vec2d(0.4, -2.0)};
+    EXPECT_EQ(copy.cut(second).springsCut, w.cut(second).springsCut);
+    EXPECT_EQ(copy.tearLog.knifeCuts, 2u);
+    expectExactContinuation(w, 20, "knife");
 }

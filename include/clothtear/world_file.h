@@ -19,7 +19,8 @@ namespace clothtear {
 
 // The version this build writes and the only one it reads. A change of the layout is a new version;
 // a parameter added to the table is not (a file without it gets the default).
-inline constexpr uint32_t kWorldFileVersion = 1;
+// Version 2: knife cuts (a fourth tear count, TearMode::Knife, and the number of knife strokes).
+inline constexpr uint32_t kWorldFileVersion = 2;
 
 // Largest world file loadWorld reads (refused before reading).
 inline constexpr uintmax_t kMaxWorldFileBytes = uintmax_t(1) << 30;

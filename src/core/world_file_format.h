@@ -52,7 +52,7 @@ inline constexpr size_t kBendBytes = 2 * 4 + 2 * 4 + 4;             // a, b, res
 inline constexpr size_t kTriangleBytes = 3 * 4 + 3 * 4 + 6 * 8 + 8;  // p, s, uv, rest area
 inline constexpr size_t kBallBytes = 3 * 4 + 3 * 4 + 4 + 4;          // x, v, radius, mass
 inline constexpr size_t kDriverBytes = 3 * 4 + 8;                    // velocity, particle count
-inline constexpr size_t kWorldScalarBytes = 8 + 8 + 8 + 1 + 3 * 8 + 4 + 4 + 4 + 8 + 4 + 4;
+inline constexpr size_t kWorldScalarBytes = 8 + 8 + 8 + 1 + 4 * 8 + 8 + 4 + 4 + 4 + 8 + 4 + 4; // 4 tear counts, knife strokes
 inline constexpr size_t kMaxSettingBytes = 4096; // one "name=value" line of the settings
 
 } // namespace clothtear::worldfile

@@ -5,6 +5,7 @@
 // before anything is allocated (a count of 4e9 particles in a 100-byte file allocates nothing), every
 // float is checked to be finite and within what the float state can hold, every index the step
 // follows without a check is checked here, and the cloth then has to pass validateCloth.
+#include "clothtear/knife.h"
 #include "clothtear/params.h"
 #include "clothtear/tear.h"
 #include "clothtear/world_file.h"
@@ -309,6 +310,7 @@ void readWorldScalars(ByteReader& r, World& w) {
     if (asleep > 1) r.fail("asleep is " + std::to_string(asleep) + ", not 0 or 1");
     w.asleep = asleep == 1;
     for (uint64_t& n : w.tearLog.counts) n = r.u64();
+    w.tearLog.knifeCuts = r.u64();
     w.maxStrain = r.f32();
     requireNumber(r, w.maxStrain, -1.0, 1e30, "largest strain of the last frame");
     w.maxSpeed = r.f32();
@@ -395,6 +397,7 @@ World readWorld(ByteReader& r, std::string_view bytes) {
     r.endSection();
     r.beginSection(kSecMesh);
     w.restMesh = readMesh(r);
+    w.restFrame = knifeFrame(w.restMesh.positions); // as World::rebuild sets it: the frame of cut strokes
     r.endSection();
     readCloth(r, w.cloth);
     // The inverse masses follow from flags, density and area shares; refreshInvMass also gives the

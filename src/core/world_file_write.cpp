@@ -139,7 +139,9 @@ void writeWorldScalars(ByteWriter& w, const World& world) {
     w.u64(world.steps);
     w.u64(world.sleptFrames);
     w.u8(world.asleep ? 1 : 0);
+    static_assert(int(TearMode::Count) == 4, "a tear mode more is a new file version");
     for (uint64_t n : world.tearLog.counts) w.u64(n);
+    w.u64(world.tearLog.knifeCuts);
     w.f32(world.maxStrain);
     w.f32(world.maxSpeed);
     w.u32(uint32_t(world.frameSubsteps));
