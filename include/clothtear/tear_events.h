@@ -19,6 +19,10 @@ struct TearEvent {
     Vec3d restPos;    // where, in rest space (m)
     Vec2d uv;         // where, in texture space
     float strain;     // strain of the spring that tore
+    // The spring that tore, as it was: what a listener needs to estimate the strain energy released,
+    // E = 1/2 k (strain * restLength)^2 with k = material.stretch_stiffness * weight (src/audio).
+    float restLength = 0; // m
+    float weight = 0;     // its stiffness weight (area / length^2, dimensionless; cloth.h Spring)
 };
 
 struct TearLog {

@@ -7,11 +7,14 @@
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/world_file.h"
+#include "soundtrack.h"
+#include "wav_file.h"
 
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 namespace clothtear {
 namespace {
@@ -147,16 +150,30 @@ int runHeadless(const RunOptions& o) {
     if (const std::string warning = sceneWarnings(world); !warning.empty())
         std::cerr << "clothtear: warning: " << warning << "\n";
     const long frames = std::lround(o.seconds / world.settings.time.frameDt);
+    std::optional<audio::Soundtrack> sound; // --audio-out: the tears' sound, frame by frame
+    if (!o.audioOut.empty()) sound.emplace(world);
     const auto start = std::chrono::steady_clock::now();
     size_t nextCut = 0;
     for (long f = 0; f < frames; ++f) {
         applyDueCuts(world, o.cuts, nextCut);
         world.step();
+        if (sound) sound->afterFrame(world);
     }
     applyDueCuts(world, o.cuts, nextCut); // a cut at the run's very end
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json report = makeReport(world, scene, wall);
     if (!loaded.is_null()) report["loaded"] = loaded;
+    if (sound) {
+        if (const std::string err = audio::writeWav(o.audioOut, sound->samples(), 2, sound->sampleRate()); !err.empty()) {
+            std::cerr << "clothtear: --audio-out: " << err << "\n";
+            return 2;
+        }
+        report["audio"] = {{"file", o.audioOut},
+                           {"seconds", double(sound->frames()) / sound->sampleRate()},
+                           {"samples", sound->frames()}, // stereo frames
+                           {"sample_rate", sound->sampleRate()},
+                           {"grains", sound->synth().grains()}};
+    }
     if (!o.exportObj.empty() && !saveObj(clothMesh(world.cloth), o.exportObj)) {
         std::cerr << "clothtear: cannot write the OBJ export to '" << o.exportObj << "'\n";
         return 2;
@@ -179,7 +196,9 @@ int runHeadless(const RunOptions& o) {
         std::cout << scene << ": " << world.steps << " frames, " << world.cloth.particleCount() << " particles, "
                   << world.cloth.triangles.size() << " triangles, max strain " << world.maxStrain << ", tears "
                   << world.tearLog.total() << ", " << report["ms_per_step"].get<double>() << " ms/frame, "
-                  << (world.finite ? "finite" : "NON-FINITE") << "\n";
+                  << (world.finite ? "finite" : "NON-FINITE");
+        if (sound) std::cout << ", audio " << o.audioOut << " (" << double(sound->frames()) / sound->sampleRate() << " s)";
+        std::cout << "\n";
     }
     return world.finite ? 0 : 1;
 }

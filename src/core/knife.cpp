@@ -309,7 +309,7 @@ private:
             const int slot = edgeSlotOf(T, s);
             const Vec2d uv = 0.5 * (T.uv[slot] + T.uv[(slot + 1) % 3]);
             const float strain = (c_.x[sp.b] - c_.x[sp.a]).norm() / sp.rest - 1.f;
-            ctx.log->add(TearEvent{TearMode::Knife, ctx.time, 0.5 * (c_.rest[sp.a] + c_.rest[sp.b]), uv, strain});
+            ctx.log->add(TearEvent{TearMode::Knife, ctx.time, 0.5 * (c_.rest[sp.a] + c_.rest[sp.b]), uv, strain, sp.rest, sp.weight});
         }
     }
 

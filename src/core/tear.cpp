@@ -89,7 +89,7 @@ bool basicTear(Cloth& c, Index s, float strain, const TearContext& ctx) {
     refreshAround(c, touched);
     if (ctx.log) {
         const Triangle& t0 = c.triangles[touched[0]];
-        ctx.log->add(TearEvent{TearMode::Basic, ctx.time, c.rest[m.onA], t0.uv[1], strain});
+        ctx.log->add(TearEvent{TearMode::Basic, ctx.time, c.rest[m.onA], t0.uv[1], strain, sp.rest, sp.weight});
     }
     return true;
 }
@@ -114,6 +114,7 @@ Vec2d uvAtParticle(const Cloth& c, Index p) {
 //   4. among them, the one with the smallest angle to the axis perpendicular to t.
 // The triangles on the far side of the chosen spring are re-attached to a new copy of p.
 bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx) {
+    const Spring tense = c.springs[sT]; // for the event (the split keeps its rest length and weight)
     const std::vector<Fan> fans = fansAround(c, p);
     if (fans.size() != 1 || fans[0].closed) return false;
     const Fan& fan = fans[0];
@@ -165,7 +166,7 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
     refreshAround(c, touched);
     relieve(c, holder, sT, 0.5f * ctx.settings.weakThreshold);
     if (ctx.copies) ctx.copies->emplace_back(p, q);
-    if (ctx.log) ctx.log->add(TearEvent{TearMode::WeakPoint, ctx.time, c.rest[p], uvAtParticle(c, p), strain});
+    if (ctx.log) ctx.log->add(TearEvent{TearMode::WeakPoint, ctx.time, c.rest[p], uvAtParticle(c, p), strain, tense.rest, tense.weight});
     return true;
 }
 
@@ -174,6 +175,7 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
 // p joins two or more fans (a tear reached the border, or two tears met): every fan but the first
 // gets its own copy of p, and the one holding the tense spring is moved slightly along the tension.
 bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx) {
+    const Spring tense = c.springs[sT]; // for the event
     const std::vector<Fan> fans = fansAround(c, p);
     if (fans.size() < 2) return false;
     std::vector<Index> touched;
@@ -187,7 +189,7 @@ bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext&
     }
     refreshAround(c, touched);
     relieve(c, holder, sT, 0.5f * ctx.settings.onePointThreshold);
-    if (ctx.log) ctx.log->add(TearEvent{TearMode::OnePoint, ctx.time, c.rest[p], uvAtParticle(c, p), strain});
+    if (ctx.log) ctx.log->add(TearEvent{TearMode::OnePoint, ctx.time, c.rest[p], uvAtParticle(c, p), strain, tense.rest, tense.weight});
     return true;
 }
 

@@ -118,6 +118,7 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
     app.add_option("--cut", cuts,
                    "Cut the cloth with the knife along U,V;U,V;... (metres in the mesh's own plane from its middle, "
                    "U right, V up), at T seconds with a T: prefix (repeatable; quote the ';')");
+    app.add_option("--audio-out", o.audioOut, "Write the sound of the run's tears to FILE (WAV, 48 kHz stereo float; headless)");
     app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");
@@ -162,8 +163,9 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
         }
         o.scene = composeSceneName(scene.value.setup->name, mesh);
     }
-    // An export or a save that cannot be written is refused before the run, not after it.
-    for (const auto& [option, path] : {std::pair{"--export-obj", &o.exportObj}, std::pair{"--save", &o.save}})
+    // An export, a save or a soundtrack that cannot be written is refused before the run, not after it.
+    for (const auto& [option, path] : {std::pair{"--export-obj", &o.exportObj}, std::pair{"--save", &o.save},
+                                       std::pair{"--audio-out", &o.audioOut}})
         if (!path->empty() && !std::ofstream(*path, std::ios::app)) {
             std::cerr << "clothtear: " << option << ": cannot write '" << *path << "'\n";
             return 2;

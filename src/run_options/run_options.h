@@ -1,6 +1,6 @@
 // Run options: the command line every `clothtear` shares, with or without the window app.
 //
-//   --headless --scene NAME --mesh OBJ --seconds S --export-obj FILE --set key=value --config FILE --json FILE
+//   --headless --scene NAME --mesh OBJ --seconds S --export-obj FILE --audio-out FILE --set key=value --config FILE --json FILE
 //   --load FILE --save FILE --cut [T:]U,V;U,V;... --list-scenes --list-params --version --help
 //
 // parseRunOptions reads them with CLI11, answers --help, --version and the lists, folds the config
@@ -44,6 +44,7 @@ struct RunOptions {
     std::string load;              // --load FILE: start from a world file (world_file.h), not the scene
     std::string save;              // --save FILE: the world as it ends, as a world file
     std::vector<CutRequest> cuts;  // --cut, repeatable, in order of time (equal times as given)
+    std::string audioOut;          // --audio-out FILE: the run's soundtrack as a WAV (headless; src/audio)
     bool listScenes = false;
     bool listParams = false;
     bool version = false;
