@@ -24,6 +24,8 @@ shot help flag
 # Rewind and undo (issue 14): a ball torn through and the timeline dragged back; the same throw undone.
 shot rewind curtain
 shot undo curtain
+# The knife (hotkey 6) drawn down through the corners scene: two halves, each on its own pin.
+shot knife corners
 # One drag at three resolutions (issue 13: the same gesture, the same kind of rip).
 for n in 40 80 160; do
     shotWith "drag$n" drag curtain --set cloth.resolution_x=$n --set cloth.resolution_y=$n
