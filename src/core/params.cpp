@@ -220,7 +220,11 @@ std::string setParamFromString(Settings& s, std::string_view name, std::string_v
         return "parameter '" + std::string(name) + "': '" + said + "' is not a number";
     if (p->type == ParamType::Int && parsed != std::floor(parsed))
         return "parameter '" + std::string(name) + "': '" + said + "' is not an integer";
-    if (parsed < p->hardMin || parsed > p->hardMax)
+    // A float parameter is checked as it will be stored: 0.0999...9 rounds to the float 0.1, which is
+    // within a range ending at 0.1 only when the bound is rounded alike (fuzz_set found it).
+    double lo = p->hardMin, hi = p->hardMax;
+    if (p->type == ParamType::Float) parsed = double(float(parsed)), lo = double(float(lo)), hi = double(float(hi));
+    if (!(parsed >= lo && parsed <= hi))
         return "parameter '" + std::string(name) + "': " + said + " is outside the valid range [" +
                fmtDouble(p->hardMin) + ", " + fmtDouble(p->hardMax) + "]" + (p->unit[0] ? std::string(" ") + p->unit : "");
     setParamUnchecked(s, *p, parsed);
