@@ -35,6 +35,9 @@ struct CheckpointData {
     std::vector<std::byte> values;     // plain values, in visitState's order
     std::vector<std::string> strings;  // in visitState's order
     std::vector<Driver> drivers;
+    // What the history and the timeline read of a checkpoint without restoring it.
+    double time = 0;
+    uint64_t steps = 0, tears = 0;
 };
 
 namespace {
@@ -218,6 +221,9 @@ Checkpoint Checkpoint::take(const World& world, const Checkpoint* previous) {
     Taker taker{*data, previous ? previous->data_.get() : nullptr};
     const StepState& carry = world.stepState();
     visitState(world, carry, taker);
+    data->time = world.time;
+    data->steps = world.steps;
+    data->tears = world.tearLog.total();
     Checkpoint c;
     c.data_ = std::move(data);
     return c;
@@ -230,58 +236,9 @@ void Checkpoint::restore(World& world) const {
     visitState(world, carry, restorer);
 }
 
-// The few values the history and the timeline read, found by restoring into a scratch World would
-// be wasteful: read them from the value blob at their offsets, found once by walking a World.
-namespace {
-struct Offsets {
-    size_t time = 0, steps = 0, counts = 0;
-};
-struct OffsetFinder {
-    const World* w;
-    Offsets& o;
-    size_t at = 0;
-    template <class T>
-    void array(const T&) {}
-    void nested(const std::vector<std::vector<Index>>&) {}
-    template <class T>
-    void value(const T& v) {
-        const void* p = &v;
-        if (p == &w->time) o.time = at;
-        if (p == &w->steps) o.steps = at;
-        if (p == &w->tearLog.counts) o.counts = at;
-        at += sizeof(T);
-    }
-    void string(const std::string&) {}
-    void drivers(const std::vector<Driver>&) {}
-    void warmStart(const ImplicitCacheSlot&, const Cloth&) {}
-};
-const Offsets& offsets() {
-    static const Offsets o = [] {
-        Offsets found;
-        World w;
-        OffsetFinder finder{&w, found};
-        const StepState& carry = w.stepState();
-        visitState(w, carry, finder);
-        return found;
-    }();
-    return o;
-}
-template <class T>
-T valueAt(const CheckpointData& d, size_t offset) {
-    T v;
-    std::memcpy(&v, d.values.data() + offset, sizeof(T));
-    return v;
-}
-} // namespace
-
-double Checkpoint::time() const { return valueAt<double>(*data_, offsets().time); }
-uint64_t Checkpoint::steps() const { return valueAt<uint64_t>(*data_, offsets().steps); }
-uint64_t Checkpoint::tears() const {
-    const auto counts = valueAt<std::array<uint64_t, int(TearMode::Count)>>(*data_, offsets().counts);
-    uint64_t total = 0;
-    for (uint64_t n : counts) total += n;
-    return total;
-}
+double Checkpoint::time() const { return data_->time; }
+uint64_t Checkpoint::steps() const { return data_->steps; }
+uint64_t Checkpoint::tears() const { return data_->tears; }
 
 size_t Checkpoint::bytesNotIn(const Checkpoint* a, const Checkpoint* b) const {
     if (!data_) return 0;
