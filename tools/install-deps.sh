@@ -7,7 +7,7 @@ packages=(cmake ninja-build g++ pkg-config libeigen3-dev libgtest-dev libgmock-d
           libbullet-dev       # Bullet: only clothbench's peers mode uses it (the build skips it when missing)
           clang-14 libclang-rt-14-dev) # clang and libFuzzer for tools/fuzz.sh
 if [[ "${1:-}" != "--no-app" ]]; then
-  packages+=(libglfw3-dev libglew-dev libimgui-dev libstb-dev xvfb xauth)
+  packages+=(libglfw3-dev libglew-dev libimgui-dev libstb-dev libsdl2-dev xvfb xauth) # SDL2: the app's live sound
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -12,6 +12,7 @@
 #include "image_io.h"
 #include "panel.h"
 #include "runner.h"
+#include "wav_file.h"
 
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
@@ -37,7 +38,7 @@ static_assert(clothtear::app::keys::A == GLFW_KEY_A && clothtear::app::keys::F1 
               clothtear::app::keys::Escape == GLFW_KEY_ESCAPE && clothtear::app::keys::Space == GLFW_KEY_SPACE &&
               clothtear::app::keys::LeftControl == GLFW_KEY_LEFT_CONTROL &&
               clothtear::app::keys::RightSuper == GLFW_KEY_RIGHT_SUPER && clothtear::app::keys::F12 == GLFW_KEY_F12 &&
-              clothtear::app::keys::Home == GLFW_KEY_HOME && GLFW_MOUSE_BUTTON_RIGHT == 1 && GLFW_MOUSE_BUTTON_MIDDLE == 2);
+              clothtear::app::keys::Home == GLFW_KEY_HOME && clothtear::app::keys::M == GLFW_KEY_M && GLFW_MOUSE_BUTTON_RIGHT == 1 && GLFW_MOUSE_BUTTON_MIDDLE == 2);
 
 // The PNGs tools/make_fabric.cpp writes at build time (src/app/CMakeLists.txt).
 #ifndef CLOTHTEAR_DEFAULT_TEXTURE
@@ -90,6 +91,7 @@ int App::run(const AppOptions& options) {
         std::cerr << err << "\n";
         return 2;
     }
+    openSound();
     state_.requestResetView = true;
     {
         const View v = currentView();
@@ -119,6 +121,10 @@ int App::run(const AppOptions& options) {
         file << formatInputScript(out);
         if (!file) std::cerr << "clothtear: cannot write the input recording to '" << options.record << "'\n", status = 2;
     }
+    audioOut_.close(); // the device stops before the report reads its counters
+    if (!options.audioOut.empty())
+        if (const std::string err = audio::writeWav(options.audioOut, soundtrack_, 2, sound_->sampleRate()); !err.empty())
+            std::cerr << "clothtear: --audio-out: " << err << "\n", status = 2;
     if (!options.exportObj.empty() && !saveObj(clothMesh(world_.cloth), options.exportObj)) {
         std::cerr << "clothtear: cannot write the OBJ export to '" << options.exportObj << "'\n";
         status = 2;
@@ -200,6 +206,18 @@ std::string App::openWindow() {
     return {};
 }
 
+// The sound device: one line when there is none (no sound card, Xvfb, CI), then silence; never an
+// error per frame (audio_out.h).
+void App::openSound() {
+    const int rate = sound_ ? sound_->sampleRate() : 48000;
+    if (const std::string why = audioOut_.open(rate); !why.empty()) {
+        state_.sound.status = "Silent: " + why;
+        std::cerr << "clothtear: " << why << "; the app runs silently\n";
+    } else {
+        state_.sound.status = "Playing through SDL's " + audioOut_.driver() + " driver";
+    }
+}
+
 void App::closeWindow() {
     if (!window_) return;
     if (ImGui::GetCurrentContext()) {
@@ -260,6 +278,8 @@ void App::frame(bool last) {
     drawHelpOverlay(state_);
     serveRequests();
     simulate(realSeconds);
+    audioOut_.setMuted(state_.sound.muted);
+    audioOut_.setVolume(state_.sound.volume);
 
     const View view = currentView();
     drawToolHud(state_, world_, view, input_.mouseX, input_.mouseY, uiMouse);
@@ -445,6 +465,24 @@ nlohmann::json App::report(double wallSeconds) const {
         {"world_file", state_.worldFile},
         {"world_error", state_.worldError},
     };
+    const AudioOutCounters sound = audioOut_.counters();
+    r["app"]["audio"] = {
+        {"device", audioOut_.driver()}, // SDL's driver while it played, "" without a device
+        {"status", state_.sound.status},
+        {"muted", state_.sound.muted},
+        {"volume", state_.sound.volume},
+        {"pushed", sound.pushed}, // stereo frames handed to the device's queue
+        {"dropped", sound.dropped},
+        {"played", sound.played},
+        {"underrun", sound.underrun},
+        {"callbacks", sound.callbacks},
+    };
+    if (!options_.audioOut.empty() && sound_)
+        r["audio"] = {{"file", options_.audioOut},
+                      {"seconds", double(soundtrack_.size() / 2) / sound_->sampleRate()},
+                      {"samples", soundtrack_.size() / 2}, // stereo frames
+                      {"sample_rate", sound_->sampleRate()},
+                      {"grains", sound_->synth().grains()}};
     const History& h = rewind_.history();
     r["app"]["history"] = {
         {"checkpoints", h.size()},

@@ -3,15 +3,20 @@
 //   app.cpp        window, GL/ImGui setup, the frame loop, screenshots, the exit report
 //   app_input.cpp  input routing: GLFW callbacks and script replay -> InputState -> ImGui first, then
 //                  hotkeys, camera and tools
-//   app_sim.cpp    scene loading, rebuilds, the fixed-step simulation and the stats
+//   app_sim.cpp    scene loading, rebuilds, the fixed-step simulation, its sound and the stats
 #pragma once
 #include "app_options.h"
 #include "app_state.h"
+#include "audio_out.h"
 #include "input_state.h"
 #include "renderer.h"
 #include "rewind.h"
+#include "sound_stream.h"
 
 #include <nlohmann/json.hpp>
+
+#include <optional>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -26,6 +31,7 @@ private:
     // app.cpp
     std::string openWindow();
     void closeWindow();
+    void openSound(); // the audio device, or one line saying why the app is silent
     void frame(bool last);
     void serveRequests();
     void serveWorldFile();
@@ -51,6 +57,8 @@ private:
     void rebuildWorld();
     void simulate(double realSeconds);
     void stepOnce();
+    // After a step: the frame's sound to the device and, with --audio-out, to the soundtrack.
+    void feedSound();
     // After an undo, redo or a frame of the timeline restored the world: let go of what the tools
     // held (their particles may not exist in the restored cloth) and redraw the topology.
     void afterRestore(const std::string& message);
@@ -63,6 +71,12 @@ private:
     Rewind rewind_; // the timeline and the undo of tears (rewind.h)
     AppState state_;
     Renderer renderer_;
+    // sound: the world's tears as a stream (rebased when the world is replaced or restored), played
+    // live through audioOut_ and, with --audio-out, kept whole for the WAV written at exit
+    std::optional<audio::SoundStream> sound_;
+    AudioOut audioOut_;
+    std::vector<float> soundBlock_;  // this step's samples, reused
+    std::vector<float> soundtrack_;  // the whole run's (--audio-out only)
     InputState input_;
     // replay and recording
     InputScript script_;

@@ -232,6 +232,7 @@ void App::handleKey(int key, bool uiKeyboard) {
     case keys::G: r.structuralSprings = !r.structuralSprings; break;
     case keys::H: r.bendSprings = !r.bendSprings; break;
     case keys::K: r.strainColors = !r.strainColors; break;
+    case keys::M: state_.sound.muted = !state_.sound.muted; break;
     case keys::B:
         world_.balls.clear();
         state_.ballFlags.clear();

@@ -33,8 +33,6 @@ int parseAppOptions(int argc, char** argv, AppOptions& o) {
                 if (cli.count(option))
                     return std::string(option) + " needs the window app; drop --headless (no display: "
                                                   "xvfb-run -a clothtear ...)";
-        // The window app plays no sound yet (issue 15, goal 2): refuse rather than write nothing.
-        if (!run.headless && cli.count("--audio-out")) return "--audio-out writes the soundtrack of a headless run; add --headless";
         return {};
     };
     return parseRunOptions(argc, argv, o, extension);

@@ -45,6 +45,8 @@ void App::startedAnew() {
     state_.clock.reset();
     state_.stats.sampleStart = -1;
     rewind_.restart(world_); // a new world: its own history (rewind.h)
+    if (sound_) sound_->rebase(world_); // its tears so far are not heard; the stream goes on
+    else sound_.emplace(world_);
 }
 
 void App::rebuildWorld() {
@@ -98,6 +100,16 @@ void App::stepOnce() {
     dragAfterStep(world_, state_.drag, pushed, particlesBefore);
     trackBalls();
     rewind_.afterStep(world_);
+    feedSound();
+}
+
+void App::feedSound() {
+    const bool keep = !options_.audioOut.empty();
+    if (!sound_ || (!audioOut_.isOpen() && !keep)) return; // nobody listens
+    soundBlock_.clear();
+    const size_t frames = sound_->afterFrame(world_, soundBlock_);
+    audioOut_.push(soundBlock_.data(), frames); // never waits (audio_out.h)
+    if (keep) soundtrack_.insert(soundtrack_.end(), soundBlock_.begin(), soundBlock_.end());
 }
 
 void App::afterRestore(const std::string& message) {
@@ -108,6 +120,7 @@ void App::afterRestore(const std::string& message) {
     state_.pieces = PiecesSummary{};
     renderer_.invalidateTopology();
     state_.clock.reset();
+    if (sound_) sound_->rebase(world_); // the restored past's tears are not heard twice
     if (!message.empty()) state_.say(message);
 }
 

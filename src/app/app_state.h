@@ -35,6 +35,13 @@ struct RenderOptions {
     std::array<float, 3> ballColor{0.85f, 0.55f, 0.15f}; // thrown balls
 };
 
+// The sound of tearing, played live (audio_out.h): the panel's Sound section and M.
+struct SoundOptions {
+    bool muted = false;  // M; the device gets silence, --audio-out still writes the sound
+    float volume = 0.8f; // [0, 1] linear gain on the device's output
+    std::string status;  // "playing through SDL's <driver> driver", or why the app is silent
+};
+
 // Measured over the last half second, shown in the stats pane.
 struct Stats {
     double fps = 0;          // displayed frames per second
@@ -76,6 +83,7 @@ struct AppState {
     // ---- view
     OrbitCamera camera;
     RenderOptions render;
+    SoundOptions sound;
     // ---- simulation control
     bool paused = false;
     int stepRequests = 0;     // single steps asked for while paused

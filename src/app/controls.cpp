@@ -27,6 +27,7 @@ const ControlHelp kControls[] = {
     {"T", "Texture on / off"},
     {"G / H", "Wireframe: structural / bend-shear springs"},
     {"K", "Strain colour map"},
+    {"M", "Mute / unmute the sound of tearing"},
     {"F1", "This help"},
     {"F2", "Hide / show the panel"},
     {"F12", "Save a screenshot (clothtear-FRAME.png)"},

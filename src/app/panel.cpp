@@ -1,7 +1,7 @@
 // ImGui windows of the app.
 //
 // Section index:
-//   [PANEL]   scene, simulation, quick switches, tools, view, texture, parameters
+//   [PANEL]   scene, simulation, quick switches, tools, view, texture, mesh, parameters, sound
 //   [STATS]   FPS, ms per phase, counts, tears per mode, energy, strain
 //   [HELP]    the controls table
 //   [HUD]     tool cursor over the view
@@ -180,6 +180,19 @@ void textureSection(AppState& st) {
     errorText(st.textureError);
 }
 
+// Live sound (audio_out.h): mute and volume act on the device at its next callback. Last in the
+// panel, so nothing above it moves (the window tests click at fixed places).
+void soundSection(AppState& st) {
+    SoundOptions& s = st.sound;
+    ImGui::Checkbox("mute (M)", &s.muted);
+    ImGui::SameLine();
+    float percent = s.volume * 100.f;
+    if (ImGui::SliderFloat("volume", &percent, 0.f, 100.f, "%.0f %%", ImGuiSliderFlags_AlwaysClamp))
+        s.volume = percent / 100.f;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gain on the sound of tearing (--audio-out writes it at full volume)");
+    ImGui::TextDisabled("%s", s.status.c_str());
+}
+
 } // namespace
 
 // ============================================================================================ [PANEL]
@@ -243,6 +256,7 @@ void drawControlPanel(AppState& st, World& world) {
             ImGui::SetTooltip("Sliders span the hard ranges: push the simulation past its stable range on purpose.");
         if (parameterGroups(world.settings, st.allowUnsafe)) st.requestReset = true;
     }
+    if (ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen)) soundSection(st);
     ImGui::PopItemWidth();
     ImGui::End();
 }

@@ -1,8 +1,7 @@
-// The soundtrack of a run: a TearListener and a RipSynth kept in step with a World, frame by frame.
-// The headless runner writes it with --audio-out (wav_file.h).
+// The soundtrack of a run: its SoundStream (sound_stream.h) kept whole, frame by frame. The headless
+// runner writes it with --audio-out (wav_file.h); the app keeps its own stream, played and kept.
 #pragma once
-#include "rip_synth.h"
-#include "sound_events.h"
+#include "sound_stream.h"
 
 #include <vector>
 
@@ -17,14 +16,11 @@ public:
     void afterFrame(const World& world);
     const std::vector<float>& samples() const { return samples_; } // interleaved stereo
     size_t frames() const { return samples_.size() / 2; }
-    int sampleRate() const { return synth_.settings().sampleRate; }
-    const RipSynth& synth() const { return synth_; }
+    int sampleRate() const { return stream_.sampleRate(); }
+    const RipSynth& synth() const { return stream_.synth(); }
 
 private:
-    TearListener listener_;
-    RipSynth synth_;
-    double start_;
-    std::vector<SoundEvent> events_; // this frame's, reused
+    SoundStream stream_;
     std::vector<float> samples_;
 };
 

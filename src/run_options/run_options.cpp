@@ -118,7 +118,7 @@ int parseRunOptions(int argc, char** argv, RunOptions& o, const RunOptionsExtens
     app.add_option("--cut", cuts,
                    "Cut the cloth with the knife along U,V;U,V;... (metres in the mesh's own plane from its middle, "
                    "U right, V up), at T seconds with a T: prefix (repeatable; quote the ';')");
-    app.add_option("--audio-out", o.audioOut, "Write the sound of the run's tears to FILE (WAV, 48 kHz stereo float; headless)");
+    app.add_option("--audio-out", o.audioOut, "Write the sound of the run's tears to FILE (WAV, 48 kHz stereo float; the window app writes what it played, at full volume)");
     app.add_flag("--list-scenes", o.listScenes, "List the scenes and exit");
     app.add_flag("--list-params", o.listParams, "List every parameter with default, unit and range, and exit");
     app.add_flag("--version", o.version, "Print the version and exit");

@@ -44,7 +44,7 @@ struct RunOptions {
     std::string load;              // --load FILE: start from a world file (world_file.h), not the scene
     std::string save;              // --save FILE: the world as it ends, as a world file
     std::vector<CutRequest> cuts;  // --cut, repeatable, in order of time (equal times as given)
-    std::string audioOut;          // --audio-out FILE: the run's soundtrack as a WAV (headless; src/audio)
+    std::string audioOut;          // --audio-out FILE: the run's soundtrack as a WAV (src/audio; the app's too)
     bool listScenes = false;
     bool listParams = false;
     bool version = false;

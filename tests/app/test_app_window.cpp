@@ -2,6 +2,7 @@
 // replayed scripts (drag tears, a ball hits, a panel click changes a parameter), exit statuses and the
 // no-display message. Skipped, saying why, only when xvfb-run is not installed.
 #include "image_io.h"
+#include "wav_file.h"
 
 #include "clothtear/mesh.h"
 
@@ -54,13 +55,16 @@ AppRun runOnce(const std::string& prefix, const std::string& args) {
     return r;
 }
 
-// `env` (e.g. "OMP_NUM_THREADS=2 ", ending with a space) is set for the app only.
+// `env` (e.g. "OMP_NUM_THREADS=2 ", ending with a space) is set for the app only. The tests play
+// their sound into SDL's dummy audio driver (a device that takes samples in real time and drops
+// them), unless `env` names a driver: no test makes a noise on a machine with speakers.
 AppRun runApp(const std::string& args, bool display = true, const std::string& env = "") {
     if (!display) return runOnce("env -u DISPLAY -u WAYLAND_DISPLAY " + env, args);
     // ctest -j runs these in parallel: start from a display number of our own (xvfb-run -a alone can
     // race with another test for the same number), and retry once on a server that failed to start.
     const std::string screen = "-s '-screen 0 1280x720x24' ";
-    const std::string app = env.empty() ? "" : "env " + env;
+    const std::string app =
+        "env " + std::string(env.find("SDL_AUDIODRIVER") == std::string::npos ? "SDL_AUDIODRIVER=dummy " : "") + env;
     AppRun r = runOnce("xvfb-run -n " + std::to_string(100 + ::getpid() % 800) + " -a " + screen + app, args);
     if (r.output.find("Xvfb failed to start") != std::string::npos ||
         (env.find("MESA_GL_VERSION_OVERRIDE") == std::string::npos && r.output.find("cannot open") != std::string::npos))
@@ -437,4 +441,113 @@ TEST(AppWindow, WorldFileSavesAndLoadsFromThePanel) {
     r = runApp("--headless --load '" + written.string() + "' --seconds 0 --json '" + json.string() + "'", false);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(readJson(json)["particles"], report["particles"]) << "the panel's Save wrote the pull it showed";
+}
+
+// ---- Live sound (issue 15, goal 2; src/app/audio_out.h) ---------------------------------------------
+
+namespace {
+
+std::vector<float> readFloats(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::vector<float> v;
+    float x;
+    while (in.read(reinterpret_cast<char*>(&x), sizeof x)) v.push_back(x);
+    return v;
+}
+
+std::vector<float> nonZero(const std::vector<float>& v, float scale) {
+    std::vector<float> out;
+    for (float x : v)
+        if (x != 0.f) out.push_back(scale * x);
+    return out;
+}
+
+} // namespace
+
+// No audio device (an SDL driver that does not exist stands for Xvfb or CI without a sound card):
+// the app says so in one line, whatever the number of frames, and runs to the end with status 0.
+TEST(AppWindow, WithoutAnAudioDeviceItRunsSilentlyAfterOneLine) {
+    REQUIRE_XVFB();
+    const fs::path json = tempDir() / "no_audio.json";
+    const AppRun r = runApp("--scene ball-r0.5-v3 --frames 40 --json '" + json.string() + "'", true,
+                            "SDL_AUDIODRIVER=no_such_driver ");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("clothtear: no audio (SDL: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the app runs silently"), std::string::npos) << r.output;
+    size_t said = 0;
+    for (size_t at = 0; (at = r.output.find("audio", at)) != std::string::npos; ++at) ++said;
+    EXPECT_EQ(said, 1u) << "one line, not one per frame:\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 2) << "that line and the run's summary:\n" << r.output;
+    const auto report = readJson(json);
+    EXPECT_EQ(report["app"]["frames"], 40);
+    EXPECT_GT(report["tears_total"].get<int>(), 0) << "the ball tears, unheard";
+    EXPECT_EQ(report["app"]["audio"]["device"], "");
+    EXPECT_EQ(report["app"]["audio"]["pushed"], 0);
+    EXPECT_NE(report["app"]["audio"]["status"].get<std::string>().find("Silent"), std::string::npos);
+}
+
+// --audio-out in the window app: the WAV is the soundtrack of the frames it stepped, sample for sample
+// the headless runner's for the same scene and time (the ball tears within the second). One thread
+// for both: above 2048 particles the step uses every thread, its result depends on how many, and the
+// two runs need not get as many (measured: 41 tears in the app, 44 in the runner with the default).
+TEST(AppWindow, AudioOutWritesTheSoundtrackOfTheAppRun) {
+    REQUIRE_XVFB();
+    const fs::path app = tempDir() / "app_rip.wav", headless = tempDir() / "headless_rip.wav", json = tempDir() / "app_rip.json";
+    AppRun r = runApp("--scene ball-r0.5-v3 --frames 60 --audio-out '" + app.string() + "' --json '" + json.string() + "'",
+                      true, "OMP_NUM_THREADS=1 ");
+    ASSERT_EQ(r.status, 0) << r.output;
+    r = runApp("--headless --scene ball-r0.5-v3 --seconds 1 --audio-out '" + headless.string() + "'", false,
+               "OMP_NUM_THREADS=1 ");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const clothtear::audio::WavData a = clothtear::audio::readWav(app.string()), h = clothtear::audio::readWav(headless.string());
+    ASSERT_EQ(a.error, "");
+    ASSERT_EQ(h.error, "");
+    EXPECT_EQ(a.frames(), 48000u) << "60 frames of 1/60 s at 48 kHz";
+    EXPECT_EQ(a.sampleRate, 48000);
+    EXPECT_TRUE(a.samples == h.samples) << "the app's soundtrack differs from the headless run's";
+    EXPECT_GT(nonZero(a.samples, 1.f).size(), 1000u) << "the tears are heard";
+    const auto report = readJson(json);
+    EXPECT_EQ(report["audio"]["file"], app.string());
+    EXPECT_EQ(report["audio"]["samples"], 48000);
+    EXPECT_EQ(report["app"]["audio"]["device"], "dummy");
+    EXPECT_EQ(report["app"]["audio"]["pushed"], 48000) << "every frame's sound went to the device's queue";
+    EXPECT_GT(report["app"]["audio"]["callbacks"].get<int>(), 0) << "the device pulled";
+}
+
+// What the device played, end to end: SDL's disk driver writes what the callback hands it to a file.
+// The sound in it is the soundtrack's, in order, at the volume (0.8 by default); underruns only add
+// silence between. Muted (M at frame 0), the device gets silence while the WAV keeps the sound.
+TEST(AppWindow, TheDevicePlaysTheSoundtrackInOrderAndMuteSilencesIt) {
+    REQUIRE_XVFB();
+    for (const bool muted : {false, true}) {
+        const std::string tag = muted ? "muted" : "loud";
+        const fs::path raw = tempDir() / (tag + ".raw"), wav = tempDir() / (tag + ".wav"), json = tempDir() / (tag + ".json");
+        const fs::path script = tempDir() / (tag + ".txt");
+        std::ofstream(script) << (muted ? "0 key M\n" : "") << "59 end\n";
+        fs::remove(raw);
+        const AppRun r = runApp("--scene ball-r0.5-v3 --script '" + script.string() + "' --audio-out '" + wav.string() +
+                                    "' --json '" + json.string() + "'",
+                                true, "SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE='" + raw.string() + "' ");
+        ASSERT_EQ(r.status, 0) << r.output;
+        const auto report = readJson(json);
+        ASSERT_EQ(report["app"]["audio"]["device"], "disk") << r.output;
+        EXPECT_EQ(report["app"]["audio"]["muted"], muted);
+        const clothtear::audio::WavData w = clothtear::audio::readWav(wav.string());
+        ASSERT_EQ(w.error, "");
+        const std::vector<float> played = readFloats(raw), sound = nonZero(w.samples, 0.8f);
+        ASSERT_GT(sound.size(), 1000u) << "the WAV has the tears in both runs";
+        ASSERT_GT(played.size(), 0u) << "the device took samples";
+        const std::vector<float> heard = nonZero(played, 1.f);
+        if (muted) {
+            EXPECT_EQ(heard.size(), 0u) << "muted, the device got silence";
+            continue;
+        }
+        ASSERT_GT(heard.size(), 0u) << "the device played the tears";
+        // Dropped frames (a machine that steps faster than real time) break the order check: the
+        // queue keeps the newest sound. Stepping the ball scene is slower than real time here.
+        if (report["app"]["audio"]["dropped"].get<int>() > 0) continue;
+        ASSERT_LE(heard.size(), sound.size());
+        for (size_t k = 0; k < heard.size(); ++k)
+            ASSERT_EQ(heard[k], sound[k]) << "sample " << k << " of what the device played is not the soundtrack's";
+    }
 }
