@@ -1,5 +1,5 @@
 #version 330 core
-// Cloth: texture (front) or own colour (back) times the interpolated Gouraud lighting. Flat shading
+// Cloth: texture (front; the back a darker shade of it) times the interpolated Gouraud lighting. Flat shading
 // lights each fragment with the triangle's own normal instead, from screen-space derivatives.
 in vec3 vFrontDiffuse;
 in vec3 vFrontSpecular;
@@ -15,7 +15,7 @@ uniform bool uFlat;
 uniform bool uStrainColors;
 uniform float uStrainMax;  // strain shown as full red (the tear threshold)
 uniform vec3 uFrontTint;
-uniform vec3 uBackColor;
+uniform vec3 uBackColor;  // textured: multiplies the fabric on the back; else the back's colour
 uniform vec3 uCameraPos;
 uniform vec3 uLightDir;
 uniform vec3 uLightColor;
@@ -37,7 +37,11 @@ void main() {
     vec3 base;
     if (uStrainColors) base = strainColor(max(vStrain, 0.0) / max(uStrainMax, 1e-6));
     else if (gl_FrontFacing) base = uUseTexture ? texture(uTexture, vUV).rgb * uFrontTint : uFrontTint;
-    else base = uBackColor;
+    // The back: the same fabric, duller and darker (uBackColor a shade), as the wrong side of a weave.
+    else if (uUseTexture) {
+        vec3 fabric = texture(uTexture, vUV).rgb;
+        base = mix(vec3(dot(fabric, vec3(0.3, 0.55, 0.15))), fabric, 0.8) * uBackColor;
+    } else base = uBackColor;
 
     vec3 diffuse, specular;
     if (uFlat) {

@@ -4,6 +4,7 @@
 set -e
 cd "$(dirname "$0")/.."
 app=${1:-build/release/src/app/clothtear}
+export SDL_AUDIODRIVER=${SDL_AUDIODRIVER:-dummy} # the scripts tear: no sound while making pictures
 dir=assets/screenshots
 shotWith() { # name script scene [extra args]
     name=$1 script=$2 scene=$3
@@ -26,6 +27,11 @@ shot rewind curtain
 shot undo curtain
 # The knife (hotkey 6) drawn down through the corners scene: two halves, each on its own pin.
 shot knife corners
+# Torn edges (issue 15, goal 4): the rip of tear.txt seen from behind; the drop scene's cloth on the
+# ground. torn-before.png and drop-before.png were made once by the renderer before goal 4 (commit
+# 5854b26) from the same scripts; they are not regenerated.
+shot torn curtain
+shot drop drop
 # One drag at three resolutions (issue 13: the same gesture, the same kind of rip).
 for n in 40 80 160; do
     shotWith "drag$n" drag curtain --set cloth.resolution_x=$n --set cloth.resolution_y=$n

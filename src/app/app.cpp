@@ -456,6 +456,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"balls_hit_cloth", state_.ballsHitCloth},
         {"script_events", script_.events.size()},
         {"topology_uploads", renderer_.topologyUploads()},
+        {"torn_edges", renderer_.tornEdges()}, // drawn with loose threads (render_mesh.h findTornEdges)
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},
         {"step_ms", state_.clock.stepCostMs},

@@ -29,7 +29,9 @@ struct RenderOptions {
     float specular = 0.18f;                              // [0, 2]   specular strength
     float shininess = 24.f;                              // [1, 256] Blinn-Phong exponent
     std::array<float, 3> frontTint{1.f, 1.f, 1.f};       // multiplies the texture on the front
-    std::array<float, 3> backColor{0.62f, 0.22f, 0.26f}; // the back of the cloth has its own colour
+    std::array<float, 3> backColor{0.78f, 0.75f, 0.78f}; // the back: a shade of the fabric (untextured: its colour)
+    bool fringe = true;       // loose threads along torn edges (render_mesh.h FringeMesh)
+    bool groundShadow = true; // the cloth's soft shadow on the ground, darkest where it touches
     std::array<float, 3> sky{0.60f, 0.74f, 0.90f};       // clear colour
     std::array<float, 3> ground{0.55f, 0.57f, 0.52f};    // ground plane colour
     std::array<float, 3> ballColor{0.85f, 0.55f, 0.15f}; // thrown balls

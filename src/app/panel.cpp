@@ -108,6 +108,11 @@ void viewSection(AppState& st) {
     ImGui::SliderFloat("specular", &r.specular, 0.f, 2.f, "%.2f");
     ImGui::SliderFloat("shininess", &r.shininess, 1.f, 256.f, "%.0f", ImGuiSliderFlags_Logarithmic);
     if (ImGui::Button("Reset view (V)")) st.requestResetView = true;
+    // Below the rest: nothing above moves.
+    ImGui::Checkbox("torn threads", &r.fringe);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Loose threads along the edges made by tearing (not along the hem)");
+    ImGui::SameLine();
+    ImGui::Checkbox("ground shadow", &r.groundShadow);
 }
 
 // A loader's error, in red under it (nothing when empty).

@@ -2,8 +2,9 @@
 //
 // Section index:
 //   [INIT]      programs, buffers, the sphere mesh, textures
-//   [FRAME]     draw(): clear, ground, cloth, balls, overlays
-//   [CLOTH]     render-mesh upload (topology only on revision change), lighting uniforms
+//   [FRAME]     draw(): clear, ground, cloth (its shadow first), torn threads, balls, overlays
+//   [CLOTH]     render-mesh upload (topology only on revision change), lighting uniforms, the shadow,
+//               the fringe of torn threads
 //   [OVERLAYS]  structural / bend-shear springs as lines, weak and pinned particles as points
 #include "renderer.h"
 
@@ -25,7 +26,9 @@ std::string Renderer::init() {
     } programs[] = {{&clothProgram_, "cloth.vert.glsl", "cloth.frag.glsl"},
                     {&litProgram_, "lit.vert.glsl", "lit.frag.glsl"},
                     {&groundProgram_, "ground.vert.glsl", "ground.frag.glsl"},
-                    {&linesProgram_, "lines.vert.glsl", "lines.frag.glsl"}};
+                    {&linesProgram_, "lines.vert.glsl", "lines.frag.glsl"},
+                    {&fringeProgram_, "fringe.vert.glsl", "fringe.frag.glsl"},
+                    {&shadowProgram_, "shadow.vert.glsl", "shadow.frag.glsl"}};
     for (const P& p : programs) {
         Result<GLuint> r = buildProgram(p.vs, p.fs);
         if (!r.ok()) return r.error;
@@ -50,6 +53,22 @@ std::string Renderer::init() {
     glEnableVertexAttribArray(3);
     glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
+    glBindVertexArray(0);
+
+    // Fringe: one interleaved buffer (fillFringeVertices), its own indices.
+    glGenVertexArrays(1, &fringeVao_);
+    glGenBuffers(1, &fringeVbo_);
+    glGenBuffers(1, &fringeEbo_);
+    glBindVertexArray(fringeVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, fringeVbo_);
+    const GLsizei fringeStride = kFringeFloats * sizeof(float);
+    const int fringeSizes[] = {3, 3, 2, 1, 1}; // position, normal, uv, thread, across
+    for (int a = 0, at = 0; a < 5; at += fringeSizes[a], ++a) {
+        glEnableVertexAttribArray(GLuint(a));
+        glVertexAttribPointer(GLuint(a), fringeSizes[a], GL_FLOAT, GL_FALSE, fringeStride,
+                              reinterpret_cast<void*>(size_t(at) * sizeof(float)));
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, fringeEbo_);
     glBindVertexArray(0);
 
     // Overlays: particle positions straight from cloth.x (Vec3 is three packed floats).
@@ -133,12 +152,12 @@ void Renderer::setTexture(const Image& image) {
 }
 
 void Renderer::shutdown() {
-    for (GLuint p : {clothProgram_, litProgram_, groundProgram_, linesProgram_})
+    for (GLuint p : {clothProgram_, litProgram_, groundProgram_, linesProgram_, fringeProgram_, shadowProgram_})
         if (p) glDeleteProgram(p);
-    const GLuint buffers[] = {clothUvVbo_, clothDynamicVbo_, clothEbo_,  particleVbo_, structuralEbo_,
-                              bendEbo_,    pointsEbo_,       groundVbo_, sphereVbo_,   sphereEbo_};
+    const GLuint buffers[] = {clothUvVbo_, clothDynamicVbo_, clothEbo_,  particleVbo_, structuralEbo_, bendEbo_,
+                              pointsEbo_,  groundVbo_,       sphereVbo_, sphereEbo_,   fringeVbo_,     fringeEbo_};
     glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
-    const GLuint arrays[] = {clothVao_, overlayVao_, groundVao_, sphereVao_};
+    const GLuint arrays[] = {clothVao_, overlayVao_, groundVao_, sphereVao_, fringeVao_};
     glDeleteVertexArrays(GLsizei(std::size(arrays)), arrays);
     if (texture_) glDeleteTextures(1, &texture_);
     *this = Renderer{};
@@ -155,7 +174,8 @@ void Renderer::draw(const World& world, const RenderOptions& o, const View& view
     glDisable(GL_CULL_FACE); // cloth is two-sided
     glDisable(GL_BLEND);
     if (world.settings.collision.ground) drawGround(world, o, view);
-    drawCloth(world, o, view);
+    drawCloth(world, o, view); // draws the shadow first, from the buffers it has just filled
+    drawFringe(world, o, view);
     drawBalls(world, o, view);
     drawOverlays(world, o, view);
     glBindVertexArray(0);
@@ -216,6 +236,9 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
     // Orphan and refill: the driver need not wait for the previous frame's draw.
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(dynamic_.size() * sizeof(float)), dynamic_.data(), GL_STREAM_DRAW);
 
+    if (world.settings.collision.ground && o.groundShadow) drawShadow(world, o, view);
+
+    glBindVertexArray(clothVao_);
     glUseProgram(clothProgram_);
     setLighting(clothProgram_, o, view);
     setInt(clothProgram_, "uUseTexture", o.texture ? 1 : 0);
@@ -235,6 +258,57 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
     }
     glDrawElements(GL_TRIANGLES, GLsizei(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+// The cloth's triangles once more, pushed along the light onto the ground (shaders/shadow.*.glsl):
+// over the ground just drawn, before the cloth, blended with GL_MIN so that overlapping layers do not
+// darken twice. No depth: the ground wrote none.
+void Renderer::drawShadow(const World& world, const RenderOptions& o, const View& view) {
+    glUseProgram(shadowProgram_);
+    setLighting(shadowProgram_, o, view);
+    const float extent = std::max(60.f, view.camera.distance * 6.f);
+    setFloat(shadowProgram_, "uHeight", world.settings.collision.groundHeight);
+    setFloat(shadowProgram_, "uFadeDistance", extent * 0.9f);
+    setVec3(shadowProgram_, "uColor", o.ground);
+    setVec3(shadowProgram_, "uSky", o.sky);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_MIN);
+    glDrawElements(GL_TRIANGLES, GLsizei(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+}
+
+// Loose threads along the torn edges: the strips rebuilt with the topology, moved every frame with
+// the cloth (the normals drawCloth computed), one draw call.
+void Renderer::drawFringe(const World& world, const RenderOptions& o, const View& view) {
+    const Cloth& cloth = world.cloth;
+    if (!o.fringe || o.strainColors || cloth.triangles.empty()) return;
+    glBindVertexArray(fringeVao_);
+    if (fringe_.stale(cloth)) {
+        fringe_.rebuild(cloth, float(kWovenThreads));
+        fringeIndices(fringe_.edges.size(), fringeIndices_);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, fringeEbo_);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(fringeIndices_.size() * sizeof(uint32_t)),
+                     fringeIndices_.data(), GL_STATIC_DRAW);
+    }
+    if (fringe_.edges.empty()) return;
+    fillFringeVertices(fringe_, cloth, normals_, fringeVertices_);
+    glBindBuffer(GL_ARRAY_BUFFER, fringeVbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(fringeVertices_.size() * sizeof(float)), fringeVertices_.data(),
+                 GL_STREAM_DRAW);
+    glUseProgram(fringeProgram_);
+    setLighting(fringeProgram_, o, view);
+    setInt(fringeProgram_, "uUseTexture", o.texture ? 1 : 0);
+    setVec3(fringeProgram_, "uFrontTint", o.frontTint);
+    setVec3(fringeProgram_, "uBackColor", o.backColor);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    setInt(fringeProgram_, "uTexture", 0);
+    glDrawElements(GL_TRIANGLES, GLsizei(fringeIndices_.size()), GL_UNSIGNED_INT, nullptr);
 }
 
 void Renderer::drawBalls(const World& world, const RenderOptions& o, const View& view) {

@@ -1,4 +1,5 @@
-// The renderer: owns every GPU object and draws the world (sky, ground, cloth, balls, debug overlays).
+// The renderer: owns every GPU object and draws the world (sky, ground and the cloth's shadow on it,
+// cloth, the loose threads of its torn edges, balls, debug overlays).
 // It reads the core's arrays; the core knows nothing of it. Uploads follow what changed: positions and
 // normals every frame, index buffers only when cloth.topologyRevision moved.
 #pragma once
@@ -22,19 +23,23 @@ public:
     // Draws one frame into the current framebuffer of fbWidth x fbHeight pixels.
     void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight);
     size_t topologyUploads() const { return topologyUploads_; }
+    size_t tornEdges() const { return fringe_.edges.size(); } // drawn with a fringe (last topology seen)
     // The cloth was replaced by a restored state whose topology revision may equal the one drawn
     // (an undo): upload the topology again on the next draw.
-    void invalidateTopology() { mesh_.revision = ~uint64_t(0); }
+    void invalidateTopology() { mesh_.revision = fringe_.revision = ~uint64_t(0); }
 
 private:
     void drawGround(const World& world, const RenderOptions& o, const View& view);
     void drawCloth(const World& world, const RenderOptions& o, const View& view);
+    void drawShadow(const World& world, const RenderOptions& o, const View& view);
+    void drawFringe(const World& world, const RenderOptions& o, const View& view);
     void drawBalls(const World& world, const RenderOptions& o, const View& view);
     void drawOverlays(const World& world, const RenderOptions& o, const View& view);
     void setLighting(GLuint program, const RenderOptions& o, const View& view);
     void buildSphere();
 
-    GLuint clothProgram_ = 0, litProgram_ = 0, groundProgram_ = 0, linesProgram_ = 0;
+    GLuint clothProgram_ = 0, litProgram_ = 0, groundProgram_ = 0, linesProgram_ = 0, fringeProgram_ = 0,
+           shadowProgram_ = 0;
     // cloth
     GLuint clothVao_ = 0, clothUvVbo_ = 0, clothDynamicVbo_ = 0, clothEbo_ = 0;
     GLuint texture_ = 0;
@@ -43,6 +48,11 @@ private:
     std::vector<float> strain_;
     std::vector<float> dynamic_;
     size_t topologyUploads_ = 0;
+    // the fringe of torn threads: rebuilt with the topology, vertices every frame
+    GLuint fringeVao_ = 0, fringeVbo_ = 0, fringeEbo_ = 0;
+    FringeMesh fringe_;
+    std::vector<float> fringeVertices_;
+    std::vector<uint32_t> fringeIndices_;
     // overlays: particle positions + line/point index buffers
     GLuint overlayVao_ = 0, particleVbo_ = 0, structuralEbo_ = 0, bendEbo_ = 0, pointsEbo_ = 0;
     uint64_t overlayRevision_ = ~uint64_t(0);

@@ -143,3 +143,56 @@ TEST(AppRenderMesh, OneVertexPerParticleAndUvWithIndicesPerTriangle) {
     w.cloth.topologyRevision++;
     EXPECT_TRUE(m.stale(w.cloth));
 }
+
+// Torn edges (issue 15, goal 4): a whole cloth has none (its border is all hem); a knife cut down
+// the middle of a 10 x 10 curtain (2 m) makes two walls of twin border edges, every one of them torn
+// and none of the hem; each fringe strip starts on its edge and reaches out of the cloth, away from
+// its triangle's third corner, by 1.4 thread spacings (2 m / 96 threads = 2.08 cm: 2.9 cm).
+TEST(AppRenderMesh, TornEdgesAreTheTearsNotTheHemAndTheirFringeReachesOut) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=10", "cloth.resolution_y=10"}), "");
+    EXPECT_TRUE(findTornEdges(w.cloth).empty()) << "a whole cloth: its border is hem";
+    size_t borderBefore = 0;
+    for (const SpringTopo& t : w.cloth.springTopo) borderBefore += t.tri[1] == kNone;
+    const CutResult cut = w.cut({Vec2d(0.05, 1.5), Vec2d(0.05, -1.5)});
+    ASSERT_TRUE(cut.ok()) << cut.error;
+    ASSERT_GT(cut.springsCut, 0u);
+    const std::vector<Index> torn = findTornEdges(w.cloth);
+    size_t borderAfter = 0;
+    for (const SpringTopo& t : w.cloth.springTopo) borderAfter += t.tri[1] == kNone;
+    EXPECT_EQ(torn.size(), 2 * cut.springsCut) << "both walls of every edge cut";
+    // The hem is the border that is not torn: the old border plus the springs split where the stroke
+    // crosses it (top and bottom, each now two halves: +1 each).
+    EXPECT_EQ(borderAfter - torn.size(), borderBefore + 2);
+    for (Index s : torn) {
+        const Spring& sp = w.cloth.springs[s];
+        const float u0 = float(w.cloth.rest[sp.a].x()), u1 = float(w.cloth.rest[sp.b].x());
+        EXPECT_NEAR(u0, 0.05f, 0.11f) << "torn edge " << s << " lies along the cut";
+        EXPECT_NEAR(u1, 0.05f, 0.11f) << "torn edge " << s << " lies along the cut";
+    }
+    FringeMesh fringe;
+    EXPECT_TRUE(fringe.stale(w.cloth));
+    fringe.rebuild(w.cloth, 96.f);
+    EXPECT_FALSE(fringe.stale(w.cloth));
+    ASSERT_EQ(fringe.edges.size(), torn.size());
+    std::vector<Vec3> normals;
+    computeParticleNormals(w.cloth, normals);
+    std::vector<float> v;
+    fillFringeVertices(fringe, w.cloth, normals, v);
+    ASSERT_EQ(v.size(), fringe.edges.size() * 4 * kFringeFloats);
+    for (size_t e = 0; e < fringe.edges.size(); ++e) {
+        const FringeMesh::Edge& edge = fringe.edges[e];
+        EXPECT_NEAR(edge.reach, 1.4f * 2.f / 96.f, 1e-3f) << "edge " << e;
+        const float* q = &v[e * 4 * kFringeFloats];
+        const Vec3 a(q[0], q[1], q[2]), outer(q[3 * kFringeFloats], q[3 * kFringeFloats + 1], q[3 * kFringeFloats + 2]);
+        EXPECT_TRUE(a.isApprox(w.cloth.x[edge.a])) << "the strip starts on the edge";
+        const Vec3 out = outer - a, in = w.cloth.x[edge.c] - a;
+        EXPECT_NEAR(out.norm(), edge.reach, 1e-4f);
+        EXPECT_LT(out.dot(in), 0.f) << "edge " << e << ": the threads reach out of the cloth, not over it";
+        EXPECT_EQ(q[9], 0.f);
+        EXPECT_EQ(q[3 * kFringeFloats + 9], 1.f);
+    }
+    std::vector<uint32_t> idx;
+    fringeIndices(fringe.edges.size(), idx);
+    EXPECT_EQ(idx.size(), fringe.edges.size() * 6);
+}

@@ -1,0 +1,44 @@
+#version 330 core
+// The fringe of loose threads along torn edges (render_mesh.h FringeMesh): lit per vertex as the
+// cloth is (shaders/cloth.vert.glsl), front and back; the threads themselves are cut out in the
+// fragment shader.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUV;
+layout(location = 3) in float aThread; // thread coordinate along the edge: one unit per woven thread
+layout(location = 4) in float aAcross; // 0 at the torn edge, 1 at the fringe's outer edge
+
+uniform mat4 uViewProj;
+uniform vec3 uCameraPos;
+uniform vec3 uLightDir;
+uniform vec3 uLightColor;
+uniform vec3 uAmbient;
+uniform float uSpecular;
+uniform float uShininess;
+
+out vec3 vFrontDiffuse;
+out vec3 vFrontSpecular;
+out vec3 vBackDiffuse;
+out vec3 vBackSpecular;
+out vec2 vUV;
+out float vThread;
+out float vAcross;
+
+void lightVertex(vec3 n, vec3 toEye, out vec3 diffuse, out vec3 specular) {
+    float ndl = max(dot(n, uLightDir), 0.0);
+    vec3 h = normalize(uLightDir + toEye);
+    float s = ndl > 0.0 ? pow(max(dot(n, h), 0.0), uShininess) : 0.0;
+    diffuse = uAmbient + uLightColor * ndl;
+    specular = uLightColor * (uSpecular * s);
+}
+
+void main() {
+    vec3 n = normalize(aNormal);
+    vec3 toEye = normalize(uCameraPos - aPosition);
+    lightVertex(n, toEye, vFrontDiffuse, vFrontSpecular);
+    lightVertex(-n, toEye, vBackDiffuse, vBackSpecular);
+    vUV = aUV;
+    vThread = aThread;
+    vAcross = aAcross;
+    gl_Position = uViewProj * vec4(aPosition, 1.0);
+}

@@ -1,0 +1,20 @@
+#version 330 core
+// The cloth's soft shadow on the ground: its triangles again (the cloth's own buffers), each vertex
+// pushed along the light onto the ground plane, remembering how high above the ground it was.
+layout(location = 0) in vec3 aPosition;
+
+uniform mat4 uViewProj;
+uniform vec3 uLightDir; // unit, towards the light
+uniform float uHeight;  // the ground's y
+
+out vec3 vWorld;
+out float vAbove;
+
+void main() {
+    float above = max(aPosition.y - uHeight, 0.0);
+    // Along the light, but never further than 4 m: a low light would throw the shadow to the horizon.
+    float along = min(above / max(uLightDir.y, 0.2), 4.0);
+    vWorld = vec3(aPosition.x, uHeight, aPosition.z) - vec3(uLightDir.x, 0.0, uLightDir.z) * along;
+    vAbove = above;
+    gl_Position = uViewProj * vec4(vWorld, 1.0);
+}
