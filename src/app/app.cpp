@@ -457,6 +457,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"script_events", script_.events.size()},
         {"topology_uploads", renderer_.topologyUploads()},
         {"torn_edges", renderer_.tornEdges()}, // drawn with loose threads (render_mesh.h findTornEdges)
+        {"dynamic_uploads", renderer_.dynamicUploads()}, // frames whose positions and normals were uploaded
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},
         {"step_ms", state_.clock.stepCostMs},

@@ -45,6 +45,7 @@ void App::startedAnew() {
     state_.clock.reset();
     state_.stats.sampleStart = -1;
     rewind_.restart(world_); // a new world: its own history (rewind.h)
+    renderer_.invalidateTopology(); // a new world: draw it anew, whatever its counters say
     if (sound_) sound_->rebase(world_); // its tears so far are not heard; the stream goes on
     else sound_.emplace(world_);
 }

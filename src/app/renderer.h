@@ -1,7 +1,7 @@
 // The renderer: owns every GPU object and draws the world (sky, ground and the cloth's shadow on it,
 // cloth, the loose threads of its torn edges, balls, debug overlays).
 // It reads the core's arrays; the core knows nothing of it. Uploads follow what changed: positions and
-// normals every frame, index buffers only when cloth.topologyRevision moved.
+// normals when the world stepped (or jumped), index buffers only when cloth.topologyRevision moved.
 #pragma once
 #include "app_state.h"
 #include "fabric_texture.h"
@@ -24,9 +24,13 @@ public:
     void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight);
     size_t topologyUploads() const { return topologyUploads_; }
     size_t tornEdges() const { return fringe_.edges.size(); } // drawn with a fringe (last topology seen)
+    size_t dynamicUploads() const { return dynamicUploads_; } // frames whose positions and normals were uploaded
     // The cloth was replaced by a restored state whose topology revision may equal the one drawn
     // (an undo): upload the topology again on the next draw.
-    void invalidateTopology() { mesh_.revision = fringe_.revision = ~uint64_t(0); }
+    void invalidateTopology() {
+        mesh_.revision = fringe_.revision = ~uint64_t(0);
+        drawn_ = overlayDrawn_ = DrawnState{};
+    }
 
 private:
     void drawGround(const World& world, const RenderOptions& o, const View& view);
@@ -48,6 +52,18 @@ private:
     std::vector<float> strain_;
     std::vector<float> dynamic_;
     size_t topologyUploads_ = 0;
+    // What the uploaded positions (and normals) show: a frame that stepped nothing (paused, the
+    // timeline held) reuses them instead of recomputing and uploading the same arrays.
+    struct DrawnState {
+        uint64_t steps = ~uint64_t(0), topology = ~uint64_t(0);
+        double time = -1;
+        size_t particles = 0;
+        bool strain = false;
+        bool operator==(const DrawnState&) const = default;
+    };
+    static DrawnState drawnState(const World& world, bool strain);
+    DrawnState drawn_, overlayDrawn_;
+    size_t dynamicUploads_ = 0;
     // the fringe of torn threads: rebuilt with the topology, vertices every frame
     GLuint fringeVao_ = 0, fringeVbo_ = 0, fringeEbo_ = 0;
     FringeMesh fringe_;

@@ -551,3 +551,23 @@ TEST(AppWindow, TheDevicePlaysTheSoundtrackInOrderAndMuteSilencesIt) {
             ASSERT_EQ(heard[k], sound[k]) << "sample " << k << " of what the device played is not the soundtrack's";
     }
 }
+
+// Issue 15, goal 5: positions and normals are computed and uploaded only for frames that moved the
+// cloth. Paused from frame 0 for 20 frames: the first draw uploads and the rest reuse it; running,
+// every frame uploads. The same counters say the contact shadow is not what makes a paused frame
+// cheap: it is skipped only when the cloth is over 1 m above the ground (the curtain: 2 m).
+TEST(AppWindow, APausedClothIsNotUploadedAgainEachFrame) {
+    REQUIRE_XVFB();
+    const fs::path script = tempDir() / "paused.txt", json = tempDir() / "paused.json";
+    std::ofstream(script) << "0 key P\n19 end\n";
+    AppRun r = runApp("--scene curtain --script '" + script.string() + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    nlohmann::json report = readJson(json);
+    EXPECT_EQ(report["app"]["frames"], 20);
+    EXPECT_LE(report["app"]["dynamic_uploads"].get<int>(), 2) << "paused: uploaded once (twice if P came after a step)";
+    EXPECT_GE(report["app"]["dynamic_uploads"].get<int>(), 1);
+    r = runApp("--scene curtain --frames 20 --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    report = readJson(json);
+    EXPECT_EQ(report["app"]["dynamic_uploads"], 20) << "running: every frame moved the cloth";
+}
