@@ -16,7 +16,7 @@ StabilityReport stability(const World& world) {
     const Cloth& c = world.cloth;
     const double dt = double(world.settings.time.frameDt) / world.settings.time.substeps;
     std::vector<double> k, kd;
-    springSumsPerParticle(c, world.settings.material, k, kd);
+    springSumsPerParticle(c, world.settings, k, kd);
     StabilityReport r;
     for (Index p = 0; p < c.particleCount(); ++p) {
         if (c.invMass[p] == 0.f) continue;

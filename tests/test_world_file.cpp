@@ -287,10 +287,10 @@ TEST(WorldFileErrors, WrongMagicAndVersions) {
     std::string bytes = bytesOf(smallTornWorld());
     EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
               "bad.ctw: byte 0 (header): not a clothtear world file (it does not start with 'clothtear world\\x0a')");
-    poke<uint32_t>(bytes, 16, 3);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 3: written by a newer clothtear; this one reads version 2");
+    poke<uint32_t>(bytes, 16, 4);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 4: written by a newer clothtear; this one reads versions 2 to 3");
     poke<uint32_t>(bytes, 16, 1);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads version 2)");
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads versions 2 to 3)");
 }
 
 TEST(WorldFileErrors, CountsThatLieAllocateNothing) {

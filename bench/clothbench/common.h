@@ -68,5 +68,6 @@ int runSkipping(const BenchOptions& options);
 int runStress(const BenchOptions& options);
 int runPeers(const BenchOptions& options);
 int runHolds(const BenchOptions& options);
+int runVacuum(const BenchOptions& options);
 
 } // namespace clothtear::bench

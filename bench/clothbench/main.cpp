@@ -8,7 +8,8 @@
 // skipping (per-phase timings, what skipping, sleeping and the ball broad phase save), stress (a
 // long randomized tearing run: invariants and memory), peers (Bullet soft-body cloth, memory
 // bandwidth bound), holds (issue 12: does the cloth hold at every size, resolution, pin and load;
-// holds.cpp), all (every mode but stress and holds).
+// holds.cpp), vacuum (issue 16: Tagawa 2003's experiments in vacuum, both material models against
+// the measured curves; vacuum.cpp), all (every mode but stress, holds and vacuum).
 #include "common.h"
 #include "run_options.h"
 
@@ -66,9 +67,9 @@ int main(int argc, char** argv) {
     std::string mode;
     CLI::App app{
         "clothbench: run time against error, stability, static accuracy, skipping, stress and peers"};
-    app.add_option("--mode", mode, "accuracy | stability | static | skipping | stress | peers | holds | all")
+    app.add_option("--mode", mode, "accuracy | stability | static | skipping | stress | peers | holds | vacuum | all")
         ->required()
-        ->check(CLI::IsMember({"accuracy", "stability", "static", "skipping", "stress", "peers", "holds", "all"}));
+        ->check(CLI::IsMember({"accuracy", "stability", "static", "skipping", "stress", "peers", "holds", "vacuum", "all"}));
     app.add_option("--out", o.out, "Folder for the CSV and SVG files (created if missing)");
     app.add_flag("--quick", o.quick, "Fewer points and shorter runs (smoke run)");
     app.add_option("--threads", o.threads, "OpenMP threads for the timed runs (peers: both 1 and this)")
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
     const std::map<std::string, int (*)(const BenchOptions&)> modes = {
         {"accuracy", runAccuracy}, {"stability", runStability}, {"static", runStatic},
         {"skipping", runSkipping}, {"stress", runStress},       {"peers", runPeers},
-        {"holds", runHolds}};
+        {"holds", runHolds},       {"vacuum", runVacuum}};
     std::cout << "clothbench: " << o.commandLine << "\nmachine: " << machineDescription() << "\n";
     try {
         if (mode != "all")

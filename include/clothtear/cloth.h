@@ -46,6 +46,17 @@ struct Triangle {
     double restArea;   // m^2, from the particles' rest positions
 };
 
+// material.model = kes (clothtear/kes.h): the memory of one hinge (one per bend-shear spring,
+// Cloth::bendMemory): the branch it is on and
+// the reversal point the branch started from. A new hinge starts at the origin on the loading branch
+// of the virgin curve M = D K + sign(K) D1 (1 - exp(-alpha |K|)).
+struct BendMemory {
+    float curvature = 0;    // 1/m   at the last evaluation (dK/dt's sign comes from it)
+    float reversalK = 0;    // 1/m   where the current branch started
+    float reversalM = 0;    // N     the moment per width there
+    int32_t direction = 0;  // +1 loading (dK/dt > 0), -1 unloading, 0 not moved yet
+};
+
 struct Cloth {
     // ---- particles: hot
     std::vector<Vec3> x, v; // m, m/s
@@ -60,6 +71,10 @@ struct Cloth {
     std::vector<SpringTopo> springTopo;
     std::vector<Spring> bends;
     std::vector<Index> bendEdge; // structural spring this bend-shear spring crosses
+    // kes only: per bend-shear spring, its hinge's memory (the hysteresis branch); empty until the
+    // kes model first steps, then kept parallel to `bends` by every topology change (a new hinge
+    // starts at rest). Saved with the world and in checkpoints; hashed when not empty.
+    std::vector<BendMemory> bendMemory;
     // ---- triangles
     std::vector<Triangle> triangles;
 

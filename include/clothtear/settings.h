@@ -18,6 +18,12 @@ enum class AirModel : int32_t { Drag = 0, Keserica = 1 };
 //   GaussSeidel  in place, spring after spring, in one canonical order (the scan's)
 //   Jacobi       averaged and over-relaxed, each spring's share divided by its ends' correction counts
 enum class LimitSolver : int32_t { GaussSeidel = 0, Jacobi = 1 };
+// The material law of the springs (include/clothtear/kes.h, docs/kes-material.md):
+//   Linear  Hooke structural and bend-shear springs (material.stretch_* / bend_*)
+//   Kes     Tagawa et al. 2003: the KES-FB1 tensile polynomial on the structural springs and the
+//           hysteretic bending rate model (KES-FB2) on a hinge per interior edge, instead of the
+//           bend-shear springs
+enum class MaterialModel : int32_t { Linear = 0, Kes = 1 };
 enum class MeshType : int32_t { Grid = 0, Irregular = 1, Obj = 2 };
 enum class PinMode : int32_t { None = 0, TopEdge = 1, TopCorners = 2, LeftRightEdges = 3, LeftEdge = 4 };
 
@@ -41,6 +47,19 @@ struct MaterialSettings {
     float stretchDamping = 0.01f;  // N s/m   damping along the spring, same scaling
     float bendStiffness = 4.f;     // N/m     bend-shear springs (Onal 3.1.2)
     float bendDamping = 0.001f;    // N s/m   bend-shear spring damping
+    MaterialModel model = MaterialModel::Linear;
+    // kes: tension per unit width T(e) = t1 e + t2 e^2 + t3 e^3 + t4 e^4 in gf/cm with e the strain in
+    // percent, as KES-FB1 prints it (Tagawa Fig. 8(a): t2 = 8.5748, t4 = 0.1191). Converted to SI in
+    // one place, kesLawSI (src/core/kes.cpp).
+    float kesT1 = 0.f;          // gf/cm per %
+    float kesT2 = 8.5748f;      // gf/cm per %^2
+    float kesT3 = 0.f;          // gf/cm per %^3
+    float kesT4 = 0.1191f;      // gf/cm per %^4
+    // kes: bending moment per unit width, rate model M = D K +/- D1 (1 - exp(-alpha |K - K_r|)) from
+    // the last reversal K_r (Tagawa Eq. 3-4, Fig. 8(b)).
+    float kesBendD = 0.12266f;  // gf cm^2/cm  bending rigidity B
+    float kesBendD1 = 0.1181f;  // gf cm/cm    hysteresis, the loop's width at K = 0 (2HB)
+    float kesBendAlpha = 24.94f; // cm         how fast the hysteresis saturates after a reversal
 };
 
 struct AirSettings {
@@ -123,6 +142,13 @@ struct SceneParams {
     // in the material (rest space) of the grabbed one, so a pull acts on the same patch of cloth at
     // any resolution; 0 holds the one particle.
     float grabRadius = 0.08f;
+    // rad/s: impulse-rotation scene, the angular velocity the impulse gives the hanging strip about
+    // its clamp (Tagawa 2003 Fig. 11; the impulse's size is not in the text: 24 rad/s is what a rigid
+    // strip of 0.1 m needs to just reach the measured 2.88 rad, docs/kes-material.md).
+    float impulseSpin = 24.f;
+    // m: swing-vacuum scene, how far out (along the cloth's normal) the free end starts, the strip
+    // bent into an arc below its clamp (Tagawa 2003 Fig. 9: the end swings within +-60 mm).
+    float swingOffset = 0.06f;
 };
 
 struct CheckSettings {

@@ -16,6 +16,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace clothtear {
@@ -84,9 +85,15 @@ inline constexpr double kGuardLightMass = 0.01;
 
 // Per particle, the summed stiffness k (N/m) and damping kd (N s/m) of the structural and
 // bend-shear springs touching it, as the material asks for them (before the guard caps any): the
-// Gershgorin row sums behind stableStepEstimate. Resizes k and kd to the particle count.
-void springSumsPerParticle(const Cloth& cloth, const MaterialSettings& material, std::vector<double>& k,
+// Gershgorin row sums behind stableStepEstimate (with material.model = kes, the tensile law's largest
+// tangent and the hinges instead of the bend-shear springs). Resizes k and kd to the particle count.
+void springSumsPerParticle(const Cloth& cloth, const Settings& settings, std::vector<double>& k,
                            std::vector<double>& kd);
+
+// The structural springs' stiffness and damping per unit weight as the material asks for them (N/m,
+// N s/m): material.stretch_*, or with material.model = kes the tensile law's largest tangent over
+// kesStrainRange (the guard's and the spring cache's "asked for").
+std::pair<double, double> structuralAsked(const Settings& settings);
 
 class World {
 public:

@@ -17,10 +17,13 @@
 
 namespace clothtear {
 
-// The version this build writes and the only one it reads. A change of the layout is a new version;
-// a parameter added to the table is not (a file without it gets the default).
+// The version this build writes; it reads this one and kOldestWorldFileVersion. A change of the
+// layout is a new version; a parameter added to the table is not (a file without it gets the default).
 // Version 2: knife cuts (a fourth tear count, TearMode::Knife, and the number of knife strokes).
-inline constexpr uint32_t kWorldFileVersion = 2;
+// Version 3: the kes hinges' memory (Cloth::bendMemory) after the bend springs; a version 2 file
+//            reads as one without (a linear cloth, or kes hinges at rest).
+inline constexpr uint32_t kWorldFileVersion = 3;
+inline constexpr uint32_t kOldestWorldFileVersion = 2;
 
 // Largest world file loadWorld reads (refused before reading).
 inline constexpr uintmax_t kMaxWorldFileBytes = uintmax_t(1) << 30;

@@ -60,7 +60,10 @@ ParamEdit paramWidget(Settings& s, const ParamInfo& p, bool unsafe) {
     switch (p.type) {
     case ParamType::Float: {
         float v = float(now);
-        const std::string format = std::string("%.4g") + (p.unit[0] ? " " : "") + p.unit;
+        // The unit goes into a printf format: a '%' in it ("gf/cm per %", the kes law) is doubled.
+        std::string unit = p.unit;
+        for (size_t i = unit.find('%'); i != std::string::npos; i = unit.find('%', i + 2)) unit.insert(i, 1, '%');
+        const std::string format = std::string("%.4g") + (unit.empty() ? "" : " ") + unit;
         const bool changed = ImGui::SliderFloat(label.c_str(), &v, float(lo), float(hi), format.c_str(), flags);
         if (changed) setParamUnchecked(s, p, v);
         edit = finish(changed, false);

@@ -82,10 +82,12 @@ void removeBendSpring(Cloth& cloth, Index b) {
     if (b != last) {
         cloth.bends[b] = cloth.bends[last];
         cloth.bendEdge[b] = cloth.bendEdge[last];
+        if (!cloth.bendMemory.empty()) cloth.bendMemory[b] = cloth.bendMemory[last];
         cloth.springTopo[cloth.bendEdge[b]].bend = b;
     }
     cloth.bends.pop_back();
     cloth.bendEdge.pop_back();
+    if (!cloth.bendMemory.empty()) cloth.bendMemory.pop_back();
 }
 
 namespace {
@@ -121,8 +123,12 @@ void syncBendSpring(Cloth& cloth, Index s) {
     if (!(rest > 0.0)) return;
     Spring bend{c, d, static_cast<float>(rest), springWeight(t0.restArea + t1.restArea, rest)};
     topo.bend = static_cast<Index>(cloth.bends.size());
+    // A kes cloth's memory follows the bends (empty: a linear cloth, nothing to follow); a new
+    // hinge (a rebuilt bend across a split edge) starts at rest.
+    const bool memory = !cloth.bendMemory.empty();
     cloth.bends.push_back(bend);
     cloth.bendEdge.push_back(s);
+    if (memory) cloth.bendMemory.push_back(BendMemory{});
 }
 
 Result<Cloth> buildCloth(const MeshData& mesh, float density) {

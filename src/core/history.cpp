@@ -58,6 +58,7 @@ void visitState(W& w, S& carry, F& f) {
     f.array(c.springTopo);
     f.array(c.bends);
     f.array(c.bendEdge);
+    f.array(c.bendMemory);
     f.array(c.triangles);
     f.value(c.topologyRevision);
     f.value(c.massRevision);

@@ -14,6 +14,7 @@ const char* const kIntegratorNames[] = {"semi-implicit-euler", "forward-euler", 
                                           nullptr};
 const char* const kAirNames[] = {"drag", "keserica", nullptr};
 const char* const kLimitSolverNames[] = {"gauss-seidel", "jacobi", nullptr};
+const char* const kMaterialNames[] = {"linear", "kes", nullptr};
 const char* const kMeshNames[] = {"grid", "irregular", "obj", nullptr};
 const char* const kPinNames[] = {"none", "top", "corners", "sides", "left", nullptr};
 
@@ -41,6 +42,14 @@ const ParamInfo kParams[] = {
     CT_F("material.stretch_damping", material.stretchDamping, 0, 2, 0, 1e4, "N s/m", "Damping along structural springs, same scaling", false),
     CT_F("material.bend_stiffness", material.bendStiffness, 0, 50, 0, 1e6, "N/m", "Bend-shear spring stiffness (Onal 3.1.2)", false),
     CT_F("material.bend_damping", material.bendDamping, 0, 0.5, 0, 1e4, "N s/m", "Bend-shear spring damping", false),
+    CT_E("material.model", material.model, kMaterialNames, "Material law: linear (Hooke springs, the stiffness and damping above) or kes (Tagawa 2003: KES tensile polynomial on the structural springs, hysteretic bending hinges instead of the bend-shear springs; docs/kes-material.md)", false),
+    CT_F("material.kes_t1", material.kesT1, 0, 100, 0, 1e5, "gf/cm per %", "kes: tension per unit width, coefficient of e (e: strain in %)", false),
+    CT_F("material.kes_t2", material.kesT2, 0, 100, 0, 1e5, "gf/cm per %^2", "kes: tension per unit width, coefficient of e^2 (Tagawa Fig. 8(a): 8.5748)", false),
+    CT_F("material.kes_t3", material.kesT3, 0, 10, 0, 1e4, "gf/cm per %^3", "kes: tension per unit width, coefficient of e^3", false),
+    CT_F("material.kes_t4", material.kesT4, 0, 10, 0, 1e4, "gf/cm per %^4", "kes: tension per unit width, coefficient of e^4 (Tagawa Fig. 8(a): 0.1191)", false),
+    CT_F("material.kes_bend_d", material.kesBendD, 0, 2, 0, 1000, "gf cm^2/cm", "kes: bending rigidity D (Tagawa Fig. 8(b): 0.12266)", false),
+    CT_F("material.kes_bend_d1", material.kesBendD1, 0, 2, 0, 1000, "gf cm/cm", "kes: bending hysteresis D1, the loop's width at K = 0 (Tagawa Fig. 8(b): 0.1181)", false),
+    CT_F("material.kes_bend_alpha", material.kesBendAlpha, 0.1, 200, 1e-3, 1e5, "cm", "kes: how fast the hysteresis saturates after a reversal, exp(-alpha abs(K - K_r)) (Tagawa Fig. 8(b): 24.94)", false),
 
     CT_E("air.model", air.model, kAirNames, "Air friction: physical drag, or Keserica's fixed fraction per step", false),
     CT_F("air.drag", air.dragCoefficient, 0, 5, 0, 1000, "kg/(m^2 s)", "Linear air drag per unit area: F = -c A v", false),
@@ -101,6 +110,8 @@ const ParamInfo kParams[] = {
     CT_F("grab.radius", scene.grabRadius, 0, 1, 0, 10, "m",
          "The hand's size: a drag and the pull scene hold every particle within this rest distance of the grabbed one (0: one particle)",
          false),
+    CT_F("swing.offset", scene.swingOffset, 0, 0.09, 0, 1, "m", "swing-vacuum scene: the free end's offset at release (the strip an arc below its clamp)", true),
+    CT_F("impulse.spin", scene.impulseSpin, 0, 60, 0, 1000, "rad/s", "impulse-rotation scene: angular velocity the impulse gives the strip about its clamp", true),
     CT_F("ball.radius", scene.ballRadius, 0.05, 5, 0.001, 100, "m", "Radius of thrown balls", false),
     CT_F("ball.speed", scene.ballSpeed, 0, 30, 0, 1000, "m/s", "Speed of thrown balls", false),
     CT_F("ball.mass", scene.ballMass, 0.05, 100, 1e-4, 1e5, "kg", "Mass of thrown balls", false),

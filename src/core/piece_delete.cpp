@@ -87,6 +87,7 @@ size_t World::deletePiece(Index triangle) {
     }
     compact(c.bends, newB);
     compact(c.bendEdge, newB);
+    if (!c.bendMemory.empty()) compact(c.bendMemory, newB);
     for (Spring& b : c.bends) b.a = newP[b.a], b.b = newP[b.b];
     for (Index& e : c.bendEdge) e = newS[e];
     // Triangles.

@@ -59,6 +59,13 @@ uint64_t stateHash(const World& w) {
         h.scalar(t.bend);
     }
     h.array(c.bendEdge);
+    // kes hinges' memory: part of the state that decides the next step; empty (and not hashed, so
+    // the golden hashes of the linear model stay) until a kes step.
+    if (!c.bendMemory.empty()) {
+        h.scalar(uint64_t(c.bendMemory.size()));
+        for (const BendMemory& m : c.bendMemory)
+            h.scalar(m.curvature), h.scalar(m.reversalK), h.scalar(m.reversalM), h.scalar(m.direction);
+    }
     h.scalar(uint64_t(c.triangles.size()));
     for (const Triangle& t : c.triangles) {
         for (int i = 0; i < 3; ++i) {

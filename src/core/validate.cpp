@@ -46,6 +46,7 @@ std::string validateCloth(const Cloth& c, double expectedArea, double expectedUv
         return "particle arrays differ in length";
     if (c.springTopo.size() != ns) return "spring arrays differ in length";
     if (c.bendEdge.size() != nb) return "bend arrays differ in length";
+    if (!c.bendMemory.empty() && c.bendMemory.size() != nb) return "bend memory (kes hinges) differs in length from the bends";
 
     for (size_t t = 0; t < nt; ++t) {
         const Triangle& tri = c.triangles[t];

@@ -49,6 +49,7 @@ inline constexpr size_t kMeshTriangleBytes = 3 * 4 + 6 * 8;          // corners,
 inline constexpr size_t kParticleBytes = 3 * 4 + 3 * 4 + 8 + 3 * 8 + 1 + 4; // x, v, area share, rest, flags, triangle count
 inline constexpr size_t kSpringBytes = 2 * 4 + 2 * 4 + 3 * 4;       // a, b, rest, weight, tri[2], bend
 inline constexpr size_t kBendBytes = 2 * 4 + 2 * 4 + 4;             // a, b, rest, weight, edge
+inline constexpr size_t kBendMemoryBytes = 3 * 4 + 4;                // curvature, reversal K, M, direction
 inline constexpr size_t kTriangleBytes = 3 * 4 + 3 * 4 + 6 * 8 + 8;  // p, s, uv, rest area
 inline constexpr size_t kBallBytes = 3 * 4 + 3 * 4 + 4 + 4;          // x, v, radius, mass
 inline constexpr size_t kDriverBytes = 3 * 4 + 8;                    // velocity, particle count

@@ -222,12 +222,29 @@ void readSprings(ByteReader& r, Cloth& c) {
     }
 }
 
-void readBends(ByteReader& r, Cloth& c) {
+void readBends(ByteReader& r, Cloth& c, uint32_t version) {
     const size_t nb = r.count(r.u64(), kBendBytes, "bend spring");
     c.bends.resize(nb), c.bendEdge.resize(nb);
     for (size_t b = 0; b < nb; ++b) {
         c.bends[b] = readSpring(r, "bend spring " + std::to_string(b) + ": ", true);
         c.bendEdge[b] = r.u32();
+    }
+    if (version < 3) return; // no hinge memory before version 3
+    const size_t nm = r.count(r.u64(), kBendMemoryBytes, "bend memory");
+    if (nm != 0 && nm != nb)
+        r.fail(std::to_string(nm) + " hinge memories for " + std::to_string(nb) + " bend springs (none or one each)");
+    c.bendMemory.resize(nm);
+    for (size_t b = 0; b < nm; ++b) {
+        const std::string at = "bend memory " + std::to_string(b) + ": ";
+        BendMemory& m = c.bendMemory[b];
+        m.curvature = r.f32();
+        requireNumber(r, m.curvature, -1e30, 1e30, at + "curvature");
+        m.reversalK = r.f32();
+        requireNumber(r, m.reversalK, -1e30, 1e30, at + "reversal curvature");
+        m.reversalM = r.f32();
+        requireNumber(r, m.reversalM, -1e30, 1e30, at + "reversal moment");
+        m.direction = int32_t(r.u32());
+        if (m.direction < -1 || m.direction > 1) r.fail(at + "direction " + std::to_string(m.direction) + " (not -1, 0 or 1)");
     }
 }
 
@@ -245,7 +262,7 @@ void readTriangles(ByteReader& r, Cloth& c) {
     }
 }
 
-void readCloth(ByteReader& r, Cloth& c) {
+void readCloth(ByteReader& r, Cloth& c, uint32_t version) {
     r.beginSection(kSecCloth);
     c.topologyRevision = r.u64();
     c.density = r.f32();
@@ -261,7 +278,7 @@ void readCloth(ByteReader& r, Cloth& c) {
     readSprings(r, c);
     r.endSection();
     r.beginSection(kSecBends);
-    readBends(r, c);
+    readBends(r, c, version);
     r.endSection();
     r.beginSection(kSecTriangles);
     readTriangles(r, c);
@@ -374,7 +391,7 @@ void readStepState(ByteReader& r, World& w, StepState& s) {
 }
 
 // The magic line and the version.
-void readHeader(ByteReader& r, std::string_view bytes) {
+uint32_t readHeader(ByteReader& r, std::string_view bytes) {
     const size_t have = std::min(bytes.size(), kMagic.size());
     if (bytes.substr(0, have) != kMagic.substr(0, have))
         r.fail("not a clothtear world file (it does not start with '" + shownInMessage(kMagic) + "')");
@@ -382,15 +399,16 @@ void readHeader(ByteReader& r, std::string_view bytes) {
     r.bytes(kMagic.size());
     if (r.left() < 4) r.failAt(kMagic.size(), "the file ends before the version number (truncated)");
     const uint32_t version = r.u32();
+    const std::string reads = "versions " + std::to_string(kOldestWorldFileVersion) + " to " + std::to_string(kWorldFileVersion);
     if (version > kWorldFileVersion)
-        r.fail("version " + std::to_string(version) + ": written by a newer clothtear; this one reads version " +
-               std::to_string(kWorldFileVersion));
-    if (version != kWorldFileVersion)
-        r.fail("unknown version " + std::to_string(version) + " (this clothtear reads version " + std::to_string(kWorldFileVersion) + ")");
+        r.fail("version " + std::to_string(version) + ": written by a newer clothtear; this one reads " + reads);
+    if (version < kOldestWorldFileVersion)
+        r.fail("unknown version " + std::to_string(version) + " (this clothtear reads " + reads + ")");
+    return version;
 }
 
 World readWorld(ByteReader& r, std::string_view bytes) {
-    readHeader(r, bytes);
+    const uint32_t version = readHeader(r, bytes);
     World w;
     r.beginSection(kSecSettings);
     readSettings(r, w.settings);
@@ -399,7 +417,7 @@ World readWorld(ByteReader& r, std::string_view bytes) {
     w.restMesh = readMesh(r);
     w.restFrame = knifeFrame(w.restMesh.positions); // as World::rebuild sets it: the frame of cut strokes
     r.endSection();
-    readCloth(r, w.cloth);
+    readCloth(r, w.cloth, version);
     // The inverse masses follow from flags, density and area shares; refreshInvMass also gives the
     // cloth a mass revision of its own.
     for (Index p = 0; p < w.cloth.particleCount(); ++p) w.cloth.refreshInvMass(p);

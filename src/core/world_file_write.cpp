@@ -103,6 +103,10 @@ void writeCloth(ByteWriter& w, const Cloth& c) {
     w.beginSection(kSecBends);
     w.u64(c.bends.size());
     for (size_t b = 0; b < c.bends.size(); ++b) w.spring(c.bends[b]), w.u32(c.bendEdge[b]);
+    // Version 3: the kes hinges' memory, none or one per bend.
+    w.u64(c.bendMemory.size());
+    for (const BendMemory& m : c.bendMemory)
+        w.f32(m.curvature), w.f32(m.reversalK), w.f32(m.reversalM), w.u32(uint32_t(m.direction));
     w.endSection();
 
     w.beginSection(kSecTriangles);

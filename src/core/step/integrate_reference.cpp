@@ -27,6 +27,12 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
         }
     }
     const MaterialSettings& m = settings.material;
+    // kes: the law's forces enter as external forces (explicit within the reference step: stable
+    // only at the steps an explicit integrator needs; docs/kes-material.md), the springs keep their
+    // damping only.
+    const bool kes = m.model == MaterialModel::Kes;
+    if (kes) kesForces(ctx, cloth, state, ext);
+    static const std::vector<Spring> kNoSprings;
     // Implicit Euler treats air drag implicitly (stable at any value); XPBD applies it explicitly,
     // capped by the guard like the explicit integrators.
     const float drag = settings.time.integrator == Integrator::Xpbd ? ctx.dragPerMass
@@ -36,8 +42,8 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
                           ctx.gravity,
                           drag,
                           ctx.keep,
-                          {SpringKind{cloth.springs, m.stretchStiffness, m.stretchDamping},
-                           SpringKind{cloth.bends, m.bendStiffness, m.bendDamping}},
+                          {SpringKind{cloth.springs, kes ? 0.f : m.stretchStiffness, m.stretchDamping},
+                           SpringKind{kes ? kNoSprings : cloth.bends, m.bendStiffness, m.bendDamping}},
                           ext};
     if (settings.time.integrator == Integrator::ImplicitEuler) {
         ImplicitCacheSlot& slot = state.implicit;

@@ -10,6 +10,11 @@ namespace clothtear {
 void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state);
 // springs.cpp: structural and bend-shear spring forces into the force buffers (explicit integrators).
 void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state);
+// material.model = kes (kes_forces.cpp): the tensile law on the structural springs and the
+// hysteretic hinges, on one thread's buffer; advances the hinges' memory (Cloth::bendMemory).
+void phaseSpringsKes(const StepContext& ctx, Cloth& cloth, StepState& state);
+// The same forces summed into `force` (N per particle) for the reference integrators.
+void kesForces(const StepContext& ctx, Cloth& cloth, StepState& state, std::vector<Vec3>& force);
 // Brings the spring cache up to date (springs.cpp); the strain scan and the ball broad phase read it.
 void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state);
 // wind.cpp: wind drag on every triangle into the force buffers.

@@ -1,6 +1,7 @@
 // Revisions (revisions.h): value comparison of the inputs a user writes directly, counters for the rest.
 #include "revisions.h"
 
+#include "clothtear/kes.h"
 #include "clothtear/world.h"
 
 #include <atomic>
@@ -11,7 +12,9 @@ bool MaterialInputs::operator==(const MaterialInputs& o) const {
     const MaterialSettings &a = material, &b = o.material;
     return a.density == b.density && a.stretchStiffness == b.stretchStiffness &&
            a.stretchDamping == b.stretchDamping && a.bendStiffness == b.bendStiffness &&
-           a.bendDamping == b.bendDamping && density == o.density &&
+           a.bendDamping == b.bendDamping && a.model == b.model && a.kesT1 == b.kesT1 && a.kesT2 == b.kesT2 &&
+           a.kesT3 == b.kesT3 && a.kesT4 == b.kesT4 && a.kesBendD == b.kesBendD && a.kesBendD1 == b.kesBendD1 &&
+           a.kesBendAlpha == b.kesBendAlpha && kesStrain == o.kesStrain && density == o.density &&
            stabilityGuard == o.stabilityGuard && integrator == o.integrator && air == o.air &&
            airDrag == o.airDrag;
 }
@@ -26,6 +29,7 @@ const Revisions& RevisionTracker::observe(const World& w, float dt) {
     m.integrator = w.settings.time.integrator;
     m.air = w.settings.air.model;
     m.airDrag = w.settings.air.dragCoefficient;
+    m.kesStrain = w.settings.material.model == MaterialModel::Kes ? float(kesStrainRange(w.settings)) : 0.f;
     if (!seenMaterial_ || !(m == material_)) {
         material_ = m;
         seenMaterial_ = true;

@@ -66,6 +66,7 @@ struct MaterialInputs {
     Integrator integrator = Integrator::SemiImplicitEuler;
     AirModel air = AirModel::Drag;
     float airDrag = 0.f;
+    float kesStrain = 0.f; // kes: the strain range the guard takes the law's tangent over (kesStrainRange)
     bool operator==(const MaterialInputs& o) const;
 };
 

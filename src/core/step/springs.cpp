@@ -5,6 +5,8 @@
 #include "phases.h"
 #include "spring_caps.h"
 
+#include "clothtear/kes.h"
+
 #include <algorithm>
 
 namespace clothtear {
@@ -73,7 +75,11 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     SpringCache& S = state.springs;
     if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps)) return;
     const MaterialSettings& m = ctx.settings->material;
-    const bool bends = m.bendStiffness > 0.f || m.bendDamping > 0.f;
+    const bool kes = m.model == MaterialModel::Kes;
+    // kes: the structural springs follow the tensile law (kesWidth below) and hinges replace the
+    // bend-shear springs (phaseSpringsKes); the guard caps the law's largest tangent.
+    const bool bends = !kes && (m.bendStiffness > 0.f || m.bendDamping > 0.f);
+    const auto [stretchAsked, stretchDampingAsked] = structuralAsked(*ctx.settings);
     const bool guard = ctx.settings->time.stabilityGuard;
     const float dt = ctx.dt;
     const size_t ns = cloth.springs.size(), nb = bends ? cloth.bends.size() : 0;
@@ -103,7 +109,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
             S.kd[offset + e] = damping;
         }
     };
-    fill(cloth.springs, ns, 0, m.stretchStiffness, m.stretchDamping);
+    fill(cloth.springs, ns, 0, float(stretchAsked), float(stretchDampingAsked));
     fill(cloth.bends, nb, ns, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
     // What the guard took from the material, for the report and the stats pane.
@@ -113,13 +119,24 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
         for (size_t e = 0; e < ns + nb; ++e) {
             const bool structural = e < ns;
             const Spring& s = structural ? cloth.springs[S.index[e]] : cloth.bends[S.index[e]];
-            const float asked = (structural ? m.stretchStiffness : m.bendStiffness) * s.weight;
-            const float askedDamping = (structural ? m.stretchDamping : m.bendDamping) * s.weight;
+            const float asked = (structural ? float(stretchAsked) : m.bendStiffness) * s.weight;
+            const float askedDamping = (structural ? float(stretchDampingAsked) : m.bendDamping) * s.weight;
             const bool capped = S.k[e] < asked * (1.f - 1e-6f) || S.kd[e] < askedDamping * (1.f - 1e-6f);
             S.cappedSprings += capped;
             if (asked > 0.f) S.stiffnessKept = std::min(S.stiffnessKept, S.k[e] / asked);
             if (askedDamping > 0.f) S.dampingKept = std::min(S.dampingKept, S.kd[e] / askedDamping);
         }
+    S.kes = kes;
+    S.kesWidth.clear();
+    if (kes) {
+        S.kesWidth.resize(ns);
+        for (size_t e = 0; e < ns; ++e) {
+            const Spring& s = cloth.springs[S.index[e]];
+            const float asked = float(stretchAsked) * s.weight;
+            const float kept = asked > 0.f ? std::min(1.f, S.k[e] / asked) : 1.f;
+            S.kesWidth[e] = s.weight * s.rest * kept;
+        }
+    }
     S.maxRest = 0.f;
     for (size_t e = 0; e < ns; ++e) S.maxRest = std::max(S.maxRest, S.rest[e]);
     S.threadRange.clear(); // recomputed for the thread count in use
@@ -143,6 +160,10 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
 void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     refreshSpringCache(ctx, cloth, state);
     SpringCache& S = state.springs;
+    if (S.kes) {
+        phaseSpringsKes(ctx, cloth, state);
+        return;
+    }
     const size_t n = cloth.particleCount();
     const size_t ns = S.structural, nb = S.a16.size() - S.structural;
     const int threads = int(state.threads.acc.size());

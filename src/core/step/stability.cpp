@@ -7,8 +7,11 @@
 // the springs of particle p, so every mode is stable when, for every free particle,
 //   (A dt^2) / 2 + B dt < 1,   A = sum(k) / m_p,  B = sum(kd) / m_p,
 // i.e. dt < (sqrt(B^2 + 2 A) - B) / A. The stiffest springs on the lightest particle decide it.
+// A nonlinear law (material.model = kes) enters with its largest tangent stiffness over the strains
+// the step lets a spring reach (kesStrainRange in kes.h), so the estimate holds wherever it goes.
 // Forward Euler has no stable step for an undamped mode; the estimate is the same and the
 // stability map (bench/README.md) shows how far it is off for that method.
+#include "clothtear/kes.h"
 #include "clothtear/world.h"
 #include "spring_caps.h"
 
@@ -19,8 +22,32 @@
 
 namespace clothtear {
 
-void springSumsPerParticle(const Cloth& cloth, const MaterialSettings& m, std::vector<double>& k,
+// The stiffness each kind of spring asks for, per unit weight: the linear material's, or with
+// material.model = kes the tensile law's largest tangent over the strains the step lets a spring
+// reach (kesStrainRange), and no bend-shear springs (hinges instead, added by addHinges).
+std::pair<double, double> structuralAsked(const Settings& s) {
+    if (s.material.model == MaterialModel::Kes)
+        return {kesMaxTangent(kesLawSI(s.material), kesStrainRange(s)), s.material.stretchDamping};
+    return {s.material.stretchStiffness, s.material.stretchDamping};
+}
+
+namespace {
+// kes: each hinge adds to the Gershgorin row sums of its four corners (kesHingeStiffness, kes.h);
+// hinges have no damping.
+void addHinges(const Cloth& cloth, const Settings& s, std::vector<double>& k) {
+    if (s.material.model != MaterialModel::Kes) return;
+    const KesLaw law = kesLawSI(s.material);
+    for (Index b = 0; b < cloth.bends.size(); ++b) {
+        const HingeGeometry h = hingeOf(cloth, b);
+        const double kh = kesHingeStiffness(law, h);
+        for (Index p : {h.c, h.d, h.a, h.e}) k[p] += kh;
+    }
+}
+} // namespace
+
+void springSumsPerParticle(const Cloth& cloth, const Settings& settings, std::vector<double>& k,
                            std::vector<double>& kd) {
+    const MaterialSettings& m = settings.material;
     k.assign(cloth.particleCount(), 0.0);
     kd.assign(cloth.particleCount(), 0.0);
     auto add = [&](const std::vector<Spring>& springs, double ks, double kds) {
@@ -30,8 +57,10 @@ void springSumsPerParticle(const Cloth& cloth, const MaterialSettings& m, std::v
                 kd[p] += kds * s.weight;
             }
     };
-    add(cloth.springs, m.stretchStiffness, m.stretchDamping);
-    add(cloth.bends, m.bendStiffness, m.bendDamping);
+    const auto [ks, kds] = structuralAsked(settings);
+    add(cloth.springs, ks, kds);
+    if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
+    addHinges(cloth, settings, k);
 }
 
 namespace {
@@ -41,10 +70,11 @@ namespace {
 // at the Gershgorin step alone, the per-spring caps (stricter for a particle with fewer than ~8
 // springs) still softened a 33 x 33 curtain by a third, and it sagged 25% more than its static
 // equilibrium.
-std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const MaterialSettings& m, bool uncapped) {
+std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const Settings& settings, bool uncapped) {
+    const MaterialSettings& m = settings.material;
     const size_t n = cloth.particleCount();
     std::vector<double> k, kd;
-    springSumsPerParticle(cloth, m, k, kd);
+    springSumsPerParticle(cloth, settings, k, kd);
     std::vector<double> springStep(n, std::numeric_limits<double>::infinity());
     if (uncapped) {
         auto add = [&](const std::vector<Spring>& springs, double ks, double kds) {
@@ -57,8 +87,9 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
                 for (Index p : {s.a, s.b}) springStep[p] = std::min(springStep[p], step);
             }
         };
-        add(cloth.springs, m.stretchStiffness, m.stretchDamping);
-        add(cloth.bends, m.bendStiffness, m.bendDamping);
+        const auto [ks, kds] = structuralAsked(settings);
+        add(cloth.springs, ks, kds);
+        if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
     }
     std::vector<std::pair<double, double>> out;
     out.reserve(n);
@@ -83,7 +114,7 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     double best = std::numeric_limits<double>::infinity();
-    for (const auto& [step, mass] : stepsAndMasses(cloth, settings.material, false))
+    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, false))
         best = std::min(best, step);
     return best;
 }
@@ -91,7 +122,7 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
 double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
-    std::vector<std::pair<double, double>> steps = stepsAndMasses(cloth, settings.material, true);
+    std::vector<std::pair<double, double>> steps = stepsAndMasses(cloth, settings, true);
     if (steps.empty())
         return std::numeric_limits<double>::infinity();
     // The step every particle meets but the ones that need a shorter one and together hold at most

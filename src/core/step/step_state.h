@@ -42,6 +42,11 @@ struct SpringCache {
     std::vector<Index> index;        // the spring's index in cloth.springs / cloth.bends
     float maxRest = 0;               // m, longest structural rest length (ball broad phase)
     std::vector<float> rest, k, kd;  // m, N/m, N s/m
+    // material.model = kes: per structural entry, the width the tension per unit width acts on
+    // (weight x rest: the adjacent rest area over the rest length), times what the guard kept of
+    // the law's stiffness; k then holds the law's largest tangent (kesStrainRange) x weight, capped.
+    std::vector<float> kesWidth;     // m
+    bool kes = false;                // built for the kes model (no bend-shear entries)
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
     // What the stability guard took from the material (World::guardCappedSprings reports it):
@@ -143,6 +148,7 @@ struct StepState {
     std::vector<int32_t> contactOf;             // per triangle: its entry in contacts, -1
     std::vector<Vec3> externalForce;            // reference integrators: N per particle (wind)
     std::vector<Vec3> xpbdDx;                   // XPBD: displacements within the sub-step
+    std::vector<Vec3d> kesHingeForce;           // kes: the hinges' forces of this sub-step (N)
     // Verlet (integrate.cpp): whether the last integration was Verlet (else its next step starts
     // it) and per particle, a dt / 2 of its last step. Part of the state hash.
     bool verletRunning = false;

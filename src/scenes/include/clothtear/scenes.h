@@ -36,6 +36,20 @@ std::string composeSceneName(std::string_view setup, std::string_view objPath);
 // the world is left as it was.
 std::string loadScene(World& world, std::string_view name, std::span<const std::string> overrides = {});
 
+// What the vacuum scenes (swing-vacuum, impulse-rotation; Tagawa 2003 Fig. 10, 12) measure: the
+// strip's free end against its clamp. The particles nearest the middle of the top and bottom edges
+// of the rest mesh, the direction the strip hangs (-up of the rest frame) and the direction it swings
+// out to (the rest frame's normal: cloth.tilt and impulse.spin move it that way).
+struct StripProbe {
+    Index top = 0, tip = 0;
+    Vec3d down = -Vec3d::UnitY(), out = Vec3d::UnitZ();
+};
+StripProbe stripProbe(const World& world);
+// m: the free end's offset from the clamp along `out` (the swing's amplitude, Fig. 10).
+double stripOffset(const World& world, const StripProbe& probe);
+// rad: the angle of clamp -> free end from hanging straight down, positive towards `out` (Fig. 12).
+double stripAngle(const World& world, const StripProbe& probe);
+
 // What a user should know about a loaded scene that is not an error (every particle pinned), or "".
 std::string sceneWarnings(const World& world);
 

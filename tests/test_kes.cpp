@@ -1,0 +1,276 @@
+// material.model = kes (include/clothtear/kes.h, docs/kes-material.md): the units, the tensile law,
+// the hysteretic bending rate model and its hinge, against values computed by hand from Tagawa's
+// printed coefficients; the hysteresis loop of a strip bent back and forth (the energy the law says
+// a cycle loses, at two resolutions; none for the linear model); the stability guard with the law's
+// tangent; the hinges' memory through a save, a load and a rewind; tearing with the kes law.
+#include "clothtear/history.h"
+#include "clothtear/kes.h"
+#include "clothtear/params.h"
+#include "clothtear/scenes.h"
+#include "clothtear/state_hash.h"
+#include "clothtear/world_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace clothtear;
+
+namespace {
+
+World scene(const char* name, std::vector<std::string> sets) {
+    World w;
+    EXPECT_EQ(loadScene(w, name, sets), "") << name;
+    return w;
+}
+
+} // namespace
+
+// gf/cm = 0.980665 N/m; at 1 % strain Tagawa's polynomial gives 0.1191 + 8.5748 = 8.6939 gf/cm.
+TEST(Kes, TensionInSiFromThePrintedCoefficients) {
+    const KesLaw law = kesLawSI(MaterialSettings{});
+    EXPECT_NEAR(kesTension(law, 0.01), 8.6939 * 0.980665, 1e-4);
+    // 5 %: 0.1191 * 625 + 8.5748 * 25 = 288.8075 gf/cm.
+    EXPECT_NEAR(kesTension(law, 0.05), 288.8075 * 0.980665, 1e-3);
+    EXPECT_NEAR(kesTension(law, -0.05), -288.8075 * 0.980665, 1e-3) << "compression mirrors extension";
+    // The tangent is the derivative (per unit strain, not per %).
+    for (double e : {0.004, 0.03, 0.1}) {
+        const double h = 1e-6, fd = (kesTension(law, e + h) - kesTension(law, e - h)) / (2 * h);
+        EXPECT_NEAR(kesTangent(law, e), fd, 1e-6 * std::max(1.0, fd)) << e;
+    }
+    EXPECT_EQ(kesTangent(law, 0.0), 0.0) << "the fit has no linear term: no stiffness at rest";
+    EXPECT_DOUBLE_EQ(kesMaxTangent(law, 0.1), kesTangent(law, 0.1));
+    // Bending: D = 0.12266 gf cm^2/cm = 1.2029e-5 N m, D1 = 0.1181 gf = 1.1582e-3 N, alpha = 0.2494 m.
+    EXPECT_NEAR(law.D, 0.12266 * 9.80665e-5, 1e-12);
+    EXPECT_NEAR(law.D1, 0.1181 * 9.80665e-3, 1e-10);
+    EXPECT_NEAR(law.alpha, 0.2494, 1e-7);
+}
+
+// The virgin curve, a reversal that keeps M continuous, and the steady loop's area (Eq. 4).
+TEST(Kes, RateModelBranchesAndLoopArea) {
+    const KesLaw law = kesLawSI(MaterialSettings{});
+    BendMemory m;
+    const double K1 = 30.0; // 1/m (0.3 cm^-1)
+    const double M1 = kesBendAdvance(law, m, K1);
+    EXPECT_NEAR(M1, law.D * K1 + law.D1 * (1 - std::exp(-law.alpha * K1)), 1e-12) << "virgin curve";
+    // Unloading: just after the reversal, M follows the new branch from (K1, M1) down.
+    const double M2 = kesBendAdvance(law, m, K1 - 1.0);
+    EXPECT_EQ(m.direction, -1);
+    EXPECT_FLOAT_EQ(m.reversalK, float(K1));
+    EXPECT_NEAR(M2, M1 - law.D - law.D1 * (1 - std::exp(-law.alpha)), 1e-6);
+    // A closed cycle -Km .. Km .. -Km after one to settle: its area, summed by the trapezoid rule.
+    for (double Km : {5.0, 50.0, 150.0}) {
+        BendMemory mem;
+        const int n = 20000;
+        double area = 0, lastK = 0, lastM = 0;
+        for (int i = 0; i <= 2 * n; ++i) {
+            const double K = Km * std::sin(2 * M_PI * i / n);
+            const double M = kesBendAdvance(law, mem, K);
+            if (i > n) area += 0.5 * (M + lastM) * (K - lastK);
+            lastK = K, lastM = M;
+        }
+        const double expected = kesLoopEnergyPerArea(law, Km);
+        EXPECT_GT(expected, 0);
+        EXPECT_NEAR(area, expected, 2e-3 * expected) << "Km = " << Km; // the work put in and lost
+    }
+    // Large alpha Km: the loop is a parallelogram of height D1 less the rounding of its corners.
+    EXPECT_NEAR(kesLoopEnergyPerArea(law, 250.0), law.D1 * (500.0 - 2 / law.alpha), 1e-12);
+}
+
+// The dihedral angle's gradient (Bridson et al. 2003) against finite differences; flat is 0.
+TEST(Kes, DihedralAngleAndItsGradient) {
+    double theta = 1;
+    Vec3d g[4];
+    ASSERT_TRUE(dihedralAngle(Vec3(0.5f, 1, 0), Vec3(0.5f, -1, 0), Vec3(0, 0, 0), Vec3(1, 0, 0), theta, g));
+    EXPECT_NEAR(theta, 0.0, 1e-12);
+    Vec3 x[4] = {Vec3(0.33f, 0.9f, 0.25f), Vec3(0.61f, -1.05f, 0.42f), Vec3(0.02f, -0.04f, 0.01f), Vec3(1.03f, 0.1f, -0.05f)};
+    ASSERT_TRUE(dihedralAngle(x[0], x[1], x[2], x[3], theta, g));
+    EXPECT_GT(std::abs(theta), 0.3);
+    Vec3d sum = Vec3d::Zero();
+    for (int i = 0; i < 4; ++i) {
+        sum += g[i];
+        for (int k = 0; k < 3; ++k) {
+            const float h = 1e-3f;
+            Vec3 y[4] = {x[0], x[1], x[2], x[3]};
+            double tp = 0, tm = 0;
+            Vec3d unused[4];
+            y[i][k] += h;
+            dihedralAngle(y[0], y[1], y[2], y[3], tp, unused);
+            y[i][k] -= 2 * h;
+            dihedralAngle(y[0], y[1], y[2], y[3], tm, unused);
+            EXPECT_NEAR(g[i][k], (tp - tm) / (2 * h), 2e-3) << "corner " << i << " axis " << k;
+        }
+    }
+    EXPECT_NEAR(sum.norm(), 0.0, 1e-9) << "the gradients sum to zero (no net force)";
+}
+
+namespace {
+
+// A strip W x H bent about an axis along its width into a cylinder of curvature K (the top edge
+// fixed, tangent down), K = Km sin(2 pi i / n) for two cycles. Returns the work the material's
+// bending forces do over the second cycle (trapezoid rule) and the sum of |work| over it; `loop`
+// receives the moment-curvature loop area of the middle hinge row.
+struct Bent {
+    double work = 0, absWork = 0, hingeLoop = 0;
+};
+Bent bendBackAndForth(MaterialModel model, int nx, int ny, double W, double H, double Km) {
+    Result<Cloth> built = buildCloth(makeGridMesh(nx, ny, W, H), 0.23f);
+    EXPECT_TRUE(built.ok());
+    Cloth c = std::move(built.value);
+    MaterialSettings m;
+    m.model = model;
+    double top = -1e30;
+    for (const Vec3d& r : c.rest) top = std::max(top, r.y());
+    auto place = [&](double K) {
+        for (Index p = 0; p < c.particleCount(); ++p) {
+            const double s = top - c.rest[p].y();
+            const double y = std::abs(K) < 1e-12 ? s : std::sin(K * s) / K;
+            const double z = std::abs(K) < 1e-12 ? 0.0 : (1 - std::cos(K * s)) / K;
+            c.x[p] = Vec3(float(c.rest[p].x()), float(top - y), float(z));
+        }
+    };
+    // The hinge nearest the middle whose edge runs across the strip (along x): it bends.
+    Index probe = kNone;
+    double best = 1e30;
+    for (Index b = 0; b < c.bends.size(); ++b) {
+        const Spring& e = c.springs[c.bendEdge[b]];
+        if (std::abs(c.rest[e.a].y() - c.rest[e.b].y()) > 1e-9) continue;
+        const double d = std::abs(c.rest[e.a].y() - (top - H / 2)) + std::abs(0.5 * (c.rest[e.a].x() + c.rest[e.b].x()));
+        if (d < best) best = d, probe = b;
+    }
+    EXPECT_NE(probe, kNone);
+    std::vector<BendMemory> memory;
+    std::vector<Vec3d> f(c.particleCount()), fLast;
+    std::vector<Vec3> xLast;
+    std::vector<double> moments;
+    Bent out;
+    const int n = 400;
+    double lastK = 0, lastM = 0;
+    for (int i = 0; i <= 2 * n; ++i) {
+        const double K = Km * std::sin(2 * M_PI * i / n);
+        place(K);
+        std::fill(f.begin(), f.end(), Vec3d::Zero());
+        materialBendForces(c, m, memory, f, &moments);
+        if (i > n) {
+            for (Index p = 0; p < c.particleCount(); ++p) {
+                const double dw = 0.5 * (f[p] + fLast[p]).dot((c.x[p] - xLast[p]).cast<double>());
+                out.work += dw;
+                out.absWork += std::abs(dw);
+            }
+        }
+        if (model == MaterialModel::Kes) {
+            // moments holds (M, K) per hinge in bend order, skipping none on this flat-rest strip.
+            const double M = moments[2 * probe], Kh = moments[2 * probe + 1];
+            if (i > n) out.hingeLoop += 0.5 * (M + lastM) * (Kh - lastK);
+            lastK = Kh, lastM = M;
+        }
+        fLast = f;
+        xLast = c.x;
+    }
+    return out;
+}
+
+} // namespace
+
+// Goal 4 of issue 16: a strip bent back and forth loses per cycle the loop's area times the bent
+// area (every hinge across the strip: W x (H - h), h the row spacing), at 5 mm and at 2.5 mm; the
+// middle hinge's own M-K loop has the law's area; the linear model loses nothing.
+TEST(Kes, StripBentBackAndForthLosesTheLoopAreaTheLawPredicts) {
+    const double W = 0.02, H = 0.05, Km = 50.0; // m, m, 1/m (0.5 cm^-1; K H stays below 2.5 rad)
+    const KesLaw law = kesLawSI(MaterialSettings{});
+    const double perArea = kesLoopEnergyPerArea(law, Km); // about 0.107 J/m^2
+    for (const auto& [nx, ny] : {std::pair{5, 11}, std::pair{9, 21}}) {
+        const double h = H / (ny - 1);
+        const Bent kes = bendBackAndForth(MaterialModel::Kes, nx, ny, W, H, Km);
+        EXPECT_NEAR(-kes.work, perArea * W * (H - h), 0.01 * perArea * W * (H - h)) << nx << " x " << ny;
+        EXPECT_NEAR(kes.hingeLoop, perArea, 0.01 * perArea) << nx << " x " << ny;
+        const Bent linear = bendBackAndForth(MaterialModel::Linear, nx, ny, W, H, Km);
+        EXPECT_GT(linear.absWork, 1e-7) << "the linear strip's bend-shear springs do work";
+        EXPECT_LT(std::abs(linear.work), 1e-3 * linear.absWork) << nx << " x " << ny << ": no loop for linear";
+    }
+}
+
+TEST(Kes, BadModelOrCoefficientsAreRefusedByTheTable) {
+    Settings s;
+    EXPECT_EQ(setParamFromString(s, "material.model", "kes"), "");
+    EXPECT_EQ(s.material.model, MaterialModel::Kes);
+    EXPECT_EQ(setParamFromString(s, "material.model", "foo"),
+              "parameter 'material.model': 'foo' is not one of: linear, kes");
+    EXPECT_EQ(setParamFromString(s, "material.kes_t4", "-1"),
+              "parameter 'material.kes_t4': -1 is outside the valid range [0, 10000] gf/cm per %^4");
+    EXPECT_NE(setParamFromString(s, "material.kes_bend_alpha", "0"), "");
+    EXPECT_EQ(s.material.kesT4, MaterialSettings{}.kesT4) << "a refused value changes nothing";
+}
+
+// The guard takes the law's largest tangent over the strains the limit lets a spring reach: a
+// range of 10 % instead of 3 % asks for a step shorter by sqrt(T'(3 %) / T'(10 %)) (without the
+// hinges and the damping, which add to both), and the swing stays finite with it; without the guard it explodes.
+// Past the range the law goes on with its tangent there (kesTensionInRange).
+TEST(Kes, GuardUsesTheLawsLargestTangent) {
+    const KesLaw law0 = kesLawSI(MaterialSettings{});
+    EXPECT_DOUBLE_EQ(kesTensionInRange(law0, 0.02, 0.03), kesTension(law0, 0.02));
+    EXPECT_NEAR(kesTensionInRange(law0, -0.05, 0.03), -(kesTension(law0, 0.03) + 0.02 * kesTangent(law0, 0.03)), 1e-9);
+    // Springs alone, undamped (damping shortens both steps by different fractions).
+    const std::vector<std::string> springs = {"material.kes_bend_d=0", "material.kes_bend_d1=0", "material.stretch_damping=0"};
+    World narrowSprings = scene("swing-vacuum", springs);
+    std::vector<std::string> wider = springs;
+    wider.push_back("limit.max_stretch=0.1");
+    World wideSprings = scene("swing-vacuum", wider);
+    World narrow = scene("swing-vacuum", {});
+    World wide = scene("swing-vacuum", {"limit.max_stretch=0.1"});
+    const KesLaw law = kesLawSI(narrow.settings.material);
+    const double expected = std::sqrt(kesTangent(law, 0.03) / kesTangent(law, 0.10));
+    const double ratio = stableStepEstimate(wideSprings.cloth, wideSprings.settings) /
+                         stableStepEstimate(narrowSprings.cloth, narrowSprings.settings);
+    EXPECT_NEAR(ratio, expected, 0.01 * expected);
+    // The hinges make both steps shorter, the narrow one more (they are a larger share of its sum).
+    EXPECT_LT(stableStepEstimate(narrow.cloth, narrow.settings), stableStepEstimate(narrowSprings.cloth, narrowSprings.settings));
+    const double withHinges = stableStepEstimate(wide.cloth, wide.settings) / stableStepEstimate(narrow.cloth, narrow.settings);
+    EXPECT_GT(withHinges, expected);
+    EXPECT_LT(withHinges, 1.2 * expected);
+    for (int f = 0; f < 20; ++f) narrow.step();
+    EXPECT_TRUE(narrow.finite);
+    EXPECT_GT(narrow.frameSubsteps, 500) << "the guard raised the sub-steps for the law's stiffness";
+    EXPECT_LT(narrow.maxStrain, 0.03f);
+    EXPECT_LT(narrow.maxSpeed, 2.f) << "a 0.1 m strip released 60 mm out";
+    World unguarded = scene("swing-vacuum", {"time.stability_guard=0", "time.substeps=50"});
+    for (int f = 0; f < 20 && unguarded.finite; ++f) unguarded.step();
+    EXPECT_TRUE(!unguarded.finite || unguarded.maxSpeed > 10.f) << "50 sub-steps a frame are too few for the law";
+}
+
+// The hinges' memory is state: a saved and loaded swing continues bit for bit, a checkpoint restores
+// it, and a world that forgets it steps differently (so the comparisons above can fail).
+TEST(Kes, HingeMemorySurvivesSaveLoadAndRewind) {
+    World w = scene("swing-vacuum", {});
+    for (int f = 0; f < 6; ++f) w.step();
+    ASSERT_EQ(w.cloth.bendMemory.size(), w.cloth.bends.size());
+    std::string bytes;
+    ASSERT_EQ(serializeWorld(w, bytes), "");
+    Result<World> copy = parseWorld(bytes, "kes.ctw");
+    ASSERT_EQ(copy.error, "");
+    History history;
+    history.record(w);
+    const uint64_t atSave = stateHash(w);
+    World forgetful = copy.value;
+    forgetful.cloth.bendMemory.clear();
+    for (int f = 0; f < 4; ++f) w.step(), copy.value.step(), forgetful.step();
+    EXPECT_EQ(hashHex(stateHash(copy.value)), hashHex(stateHash(w)));
+    EXPECT_NE(hashHex(stateHash(forgetful)), hashHex(stateHash(w))) << "the memory decides the future";
+    World r = scene("curtain", {"cloth.resolution_x=4", "cloth.resolution_y=4"});
+    history.at(0).restore(r);
+    EXPECT_EQ(hashHex(stateHash(r)), hashHex(atSave));
+    for (int f = 0; f < 4; ++f) r.step();
+    EXPECT_EQ(hashHex(stateHash(r)), hashHex(stateHash(w)));
+}
+
+// Tearing keeps working with the law: the threshold is a strain, the memory follows the bends
+// through every split (validateCloth checks the lengths), and the torn cloth stays finite.
+TEST(Kes, TensionTearsWithTheKesLaw) {
+    World w = scene("tension", {"material.model=kes", "cloth.resolution_x=16", "cloth.resolution_y=12",
+                                "tear.validate=1"});
+    for (int f = 0; f < 90; ++f) w.step();
+    EXPECT_TRUE(w.finite) << w.nonFiniteWhere;
+    EXPECT_GT(w.tearLog.total(), 0u);
+    EXPECT_EQ(w.tearLog.validationError, "");
+    EXPECT_EQ(w.cloth.bendMemory.size(), w.cloth.bends.size());
+}
