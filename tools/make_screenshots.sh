@@ -27,6 +27,13 @@ shot rewind curtain
 shot undo curtain
 # The knife (hotkey 6) drawn down through the corners scene: two halves, each on its own pin.
 shot knife corners
+# Piece deletion: the same cut, the stats pane's pieces list opened, one half's Delete clicked.
+shot delete corners
+# Save and load: the pull scene torn by the headless runner and saved, loaded in the window.
+world=$(mktemp /tmp/clothtear-pulled-XXXXXX.ctw)
+"$app" --headless --scene pull --seconds 4 --save "$world" >/dev/null
+xvfb-run -a -s "-screen 0 1280x720x24" "$app" --load "$world" --script "$dir/load.txt" --screenshot "$dir/load.png"
+rm -f "$world"
 # Torn edges (issue 15, goal 4): the rip of tear.txt seen from behind; the drop scene's cloth on the
 # ground. torn-before.png and drop-before.png were made once by the renderer before goal 4 (commit
 # 5854b26) from the same scripts; they are not regenerated.
