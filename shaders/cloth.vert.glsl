@@ -8,12 +8,7 @@ layout(location = 2) in float aStrain;
 layout(location = 3) in vec2 aUV;
 
 uniform mat4 uViewProj;
-uniform vec3 uCameraPos;
-uniform vec3 uLightDir;   // unit, towards the light
-uniform vec3 uLightColor;
-uniform vec3 uAmbient;
-uniform float uSpecular;
-uniform float uShininess;
+#include "vertex_lighting.glsl"
 
 out vec3 vFrontDiffuse;
 out vec3 vFrontSpecular;
@@ -22,14 +17,6 @@ out vec3 vBackSpecular;
 out vec2 vUV;
 out vec3 vWorld;
 out float vStrain;
-
-void lightVertex(vec3 n, vec3 toEye, out vec3 diffuse, out vec3 specular) {
-    float ndl = max(dot(n, uLightDir), 0.0);
-    vec3 h = normalize(uLightDir + toEye);
-    float s = ndl > 0.0 ? pow(max(dot(n, h), 0.0), uShininess) : 0.0;
-    diffuse = uAmbient + uLightColor * ndl;
-    specular = uLightColor * (uSpecular * s);
-}
 
 void main() {
     vec3 n = normalize(aNormal);

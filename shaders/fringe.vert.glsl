@@ -9,12 +9,7 @@ layout(location = 3) in float aThread; // thread coordinate along the edge: one 
 layout(location = 4) in float aAcross; // 0 at the torn edge, 1 at the fringe's outer edge
 
 uniform mat4 uViewProj;
-uniform vec3 uCameraPos;
-uniform vec3 uLightDir;
-uniform vec3 uLightColor;
-uniform vec3 uAmbient;
-uniform float uSpecular;
-uniform float uShininess;
+#include "vertex_lighting.glsl"
 
 out vec3 vFrontDiffuse;
 out vec3 vFrontSpecular;
@@ -23,14 +18,6 @@ out vec3 vBackSpecular;
 out vec2 vUV;
 out float vThread;
 out float vAcross;
-
-void lightVertex(vec3 n, vec3 toEye, out vec3 diffuse, out vec3 specular) {
-    float ndl = max(dot(n, uLightDir), 0.0);
-    vec3 h = normalize(uLightDir + toEye);
-    float s = ndl > 0.0 ? pow(max(dot(n, h), 0.0), uShininess) : 0.0;
-    diffuse = uAmbient + uLightColor * ndl;
-    specular = uLightColor * (uSpecular * s);
-}
 
 void main() {
     vec3 n = normalize(aNormal);

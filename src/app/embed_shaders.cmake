@@ -8,6 +8,15 @@ string(APPEND body "struct Entry { const char* name; const char* source; };\ncon
 foreach(file ${shader_files})
   get_filename_component(name "${file}" NAME)
   file(READ "${file}" text)
+  # GLSL has no #include: a line `#include "chunk.glsl"` is replaced here by that file of the same
+  # folder (shared code such as the vertex lighting; one level deep).
+  get_filename_component(dir "${file}" DIRECTORY)
+  string(REGEX MATCHALL "#include \"[^\"]+\"" includes "${text}")
+  foreach(line ${includes})
+    string(REGEX REPLACE "#include \"([^\"]+)\"" "\\1" chunk "${line}")
+    file(READ "${dir}/${chunk}" chunk_text)
+    string(REPLACE "${line}" "${chunk_text}" text "${text}")
+  endforeach()
   string(APPEND body "    {\"${name}\", R\"glsl_src(${text})glsl_src\"},\n")
 endforeach()
 string(APPEND body "};\n} // namespace\n\nconst char* shaderSource(const char* name) {\n")
