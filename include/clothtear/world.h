@@ -34,6 +34,7 @@ struct StepProfile {
     // the limit (e.g. a fine cloth in wind at few sub-steps: README "Status and known gaps").
     uint64_t limitCapped = 0;
     uint64_t limitCappedSprings = 0;
+    uint64_t limitPasses = 0; // passes of the length limit run, summed over sub-steps
     void reset() { *this = StepProfile{}; }
 };
 

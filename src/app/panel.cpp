@@ -335,8 +335,9 @@ void drawStatsPane(AppState& st, const World& world) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The length limit (limit.max_stretch) pulls over-stretched springs back each\n"
                           "sub-step in a bounded number of passes (limit.iterations; with gauss-seidel up\n"
-                          "to 4 x the cloth's depth). When they run out, the cloth ends the sub-step\n"
-                          "stretched further: normal while you pull or a ball hits, a solver gap at rest.");
+                          "to 4 x the cloth's depth, but limit.iterations while you drag: the hand may\n"
+                          "stretch the cloth). When they run out, the cloth ends the sub-step stretched\n"
+                          "further: normal while you pull or a ball hits, a solver gap at rest.");
     ImGui::Text("draw %.1f ms   swap %.1f ms", s.drawMs, s.swapMs);
     // Per-phase timings are for engineers: folded, so the pane fits a small window.
     if (ImGui::TreeNode("time per phase")) {

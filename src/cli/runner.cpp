@@ -104,6 +104,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"limit_capped_substeps", w.profile.limitCapped},
         {"limit_capped_springs", w.profile.limitCappedSprings},
         {"substeps_run", w.profile.substeps},
+        {"limit_passes", w.profile.limitPasses}, // passes of the length limit, summed over sub-steps
         {"tears", tears},
         {"tears_total", w.tearLog.total()}, // every event, the knife's cut springs included ("tears" by mode)
         {"knife", {{"cuts", w.tearLog.knifeCuts}, {"springs", w.tearLog.counts[int(TearMode::Knife)]}}},
