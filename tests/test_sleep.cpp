@@ -1,10 +1,16 @@
 // Sleep (src/core/sleep.cpp) and the ball broad phase (src/core/collide.cpp, trianglesIn): what
 // they skip must not change what is simulated.
+#include "clothtear/knife.h"
+#include "clothtear/params.h"
+#include "clothtear/pieces.h"
 #include "clothtear/scenes.h"
 #include "clothtear/world.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -131,3 +137,134 @@ TEST(BroadPhase, SameResultAsTestingEveryTriangle) {
 }
 
 } // namespace
+
+// ---- torn pieces (src/core/step/piece_sleep.cpp) -------------------------------------------------
+
+namespace {
+
+// The curtain (2 m, pinned along its top) cut across 0.6 m above its hem after one frame: the strip
+// below falls to the ground and settles there while the rest swings.
+World cutCurtain(int res, std::vector<std::string> extra = {}) {
+    World w;
+    const std::string r = std::to_string(res);
+    std::vector<std::string> o = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r};
+    o.insert(o.end(), extra.begin(), extra.end());
+    EXPECT_EQ(loadScene(w, "curtain", o), "");
+    w.step();
+    const CutResult cut = w.cut({Vec2d(-1.2, -0.4), Vec2d(1.2, -0.4)});
+    EXPECT_GT(cut.particlesAdded, 0u);
+    EXPECT_EQ(findPieces(w.cloth).size(), 2u);
+    return w;
+}
+
+size_t piecesAsleep(const World& w) {
+    size_t n = 0;
+    for (const Piece& p : findPieces(w.cloth)) n += p.asleep;
+    return n;
+}
+
+// Steps until a piece sleeps (at most `frames`); returns the frames stepped, -1 if none slept.
+int stepUntilAPieceSleeps(World& w, int frames) {
+    for (int f = 1; f <= frames; ++f) {
+        w.step();
+        if (piecesAsleep(w) > 0) return f;
+    }
+    return -1;
+}
+
+} // namespace
+
+// The strip cut off sleeps once it has lain still for sleep.delay, at 16 and 32 a side (after 5.6 s
+// at both when written): then its particles have no inverse mass and no velocity and do not move, it
+// is the piece on the ground (the smaller one, with no pin), and while a hand pulls the curtain
+// above it about, the curtain is simulated and the strip sleeps on.
+TEST(PieceSleep, ATornOffStripSleepsOnTheGroundWhileTheCurtainSwings) {
+    for (int res : {16, 32}) {
+        World w = cutCurtain(res);
+        const int frames = stepUntilAPieceSleeps(w, 6 * 60);
+        ASSERT_GT(frames, 0) << res << ": no piece fell asleep in 6 s";
+        EXPECT_GT(frames, 60) << res << ": it falls 2 m and then lies still for sleep.delay (1 s) first";
+        const std::vector<Piece> pieces = findPieces(w.cloth);
+        ASSERT_EQ(pieces.size(), 2u);
+        EXPECT_FALSE(pieces[0].asleep) << res << ": the pinned curtain";
+        EXPECT_TRUE(pieces[1].asleep) << res;
+        EXPECT_NEAR(pieces[1].restArea, 2.0 * 0.6, 0.1) << res << ": the strip below the cut";
+        std::vector<Index> strip;
+        for (Index p = 0; p < w.cloth.particleCount(); ++p)
+            if (w.cloth.asleep(p)) strip.push_back(p);
+        float lowest = 1e30f;
+        for (Index p : strip) {
+            EXPECT_FALSE(w.cloth.pinned(p));
+            EXPECT_EQ(w.cloth.invMass[p], 0.f);
+            EXPECT_EQ(w.cloth.v[p], Vec3::Zero());
+            lowest = std::min(lowest, w.cloth.x[p].y());
+        }
+        EXPECT_LT(lowest, w.settings.collision.groundHeight + 0.05f) << res << ": it rests on the ground";
+        EXPECT_FALSE(w.asleep) << res << ": the curtain has not settled yet";
+        // A hand pulls the curtain about: the strip on the ground sleeps on.
+        Index held = kNone;
+        for (Index p = 0; p < w.cloth.particleCount() && held == kNone; ++p)
+            if (!w.cloth.asleep(p) && !w.cloth.pinned(p)) held = p;
+        ASSERT_NE(held, kNone);
+        w.cloth.setPinned(held, true);
+        w.drivers.push_back(Driver{{held}, Vec3(0.f, 0.f, 0.5f)});
+        const std::vector<Vec3> x = w.cloth.x;
+        const uint64_t substeps = w.profile.substeps;
+        for (int f = 0; f < 30; ++f) w.step();
+        for (Index p : strip) EXPECT_EQ(w.cloth.x[p], x[p]);
+        EXPECT_EQ(piecesAsleep(w), 1u) << res;
+        EXPECT_EQ(w.profile.substeps - substeps, 30u * uint64_t(w.frameSubsteps)) << res << ": the World is simulated";
+        EXPECT_NEAR((w.cloth.x[held] - x[held]).z(), 0.25f, 1e-3f) << res << ": and the hand moved the curtain";
+        std::cout << res << " a side: the strip sleeps after " << frames << " frames, " << strip.size() << " particles\n";
+    }
+}
+
+// Whatever can move a sleeping strip wakes it: a hand grabbing one of its particles (a driver),
+// a ball coming near, a changed parameter, an impulse. Awake, it moves again.
+TEST(PieceSleep, WakesForAHandABallAParameterAndAnImpulse) {
+    World asleep = cutCurtain(16);
+    ASSERT_GT(stepUntilAPieceSleeps(asleep, 6 * 60), 0);
+    Index grabbed = kNone;
+    for (Index p = 0; p < asleep.cloth.particleCount() && grabbed == kNone; ++p)
+        if (asleep.cloth.asleep(p)) grabbed = p;
+    ASSERT_NE(grabbed, kNone);
+
+    World hand = asleep;
+    hand.cloth.setPinned(grabbed, true);
+    hand.drivers.push_back(Driver{{grabbed}, Vec3(0.f, 1.f, 0.f)});
+    const Vec3 before = hand.cloth.x[grabbed];
+    hand.step();
+    EXPECT_EQ(piecesAsleep(hand), 0u) << "a hand";
+    EXPECT_GT((hand.cloth.x[grabbed] - before).norm(), 0.01f);
+
+    World ball = asleep;
+    ball.step();
+    EXPECT_EQ(piecesAsleep(ball), 1u) << "nothing near: it sleeps on";
+    Ball b;
+    b.radius = 0.2f;
+    b.x = ball.cloth.x[grabbed] + Vec3(0.f, 0.5f, 0.f);
+    b.v = Vec3(0.f, -5.f, 0.f);
+    ball.balls.push_back(b);
+    ball.step();
+    EXPECT_EQ(piecesAsleep(ball), 0u) << "a ball";
+
+    World param = asleep;
+    ASSERT_EQ(setParamFromString(param.settings, "gravity.x", "3"), "");
+    param.step();
+    EXPECT_EQ(piecesAsleep(param), 0u) << "a parameter";
+    for (int f = 0; f < 10; ++f) param.step();
+    EXPECT_GT(std::abs(param.cloth.x[grabbed].x() - asleep.cloth.x[grabbed].x()), 0.001f) << "sideways gravity moves it";
+
+    World impulse = asleep;
+    impulse.applyImpulse(impulse.cloth.x[grabbed], 0.2f, Vec3(0.f, 1.f, 0.f), 1.f);
+    EXPECT_EQ(piecesAsleep(impulse), 0u) << "an impulse";
+    EXPECT_GT(impulse.cloth.v[grabbed].y(), 0.5f);
+}
+
+// With sleep off, or in wind, no piece sleeps.
+TEST(PieceSleep, NeverWithSleepOffOrInWind) {
+    World off = cutCurtain(16, {"sleep.enabled=false"});
+    EXPECT_EQ(stepUntilAPieceSleeps(off, 4 * 60), -1);
+    World wind = cutCurtain(16, {"wind.enabled=true", "wind.speed=1"});
+    EXPECT_EQ(stepUntilAPieceSleeps(wind, 4 * 60), -1);
+}

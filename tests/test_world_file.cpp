@@ -157,6 +157,34 @@ TEST(WorldFile, SleepingCurtainContinuesBitForBit) {
     EXPECT_TRUE(settling.asleep);
 }
 
+// A torn-off strip lying still on the ground, saved half a second before it falls asleep (how long
+// each particle has been still is in the file, version 4): the copy puts it to sleep on the same
+// frame; and saved asleep, it sleeps on in the copy.
+TEST(WorldFile, SettlingTornPieceContinuesBitForBit) {
+    auto cutCurtain = [] {
+        World w = scene("curtain", {"cloth.resolution_x=12", "cloth.resolution_y=12"});
+        w.step();
+        EXPECT_GT(w.cut({Vec2d(-1.2, -0.4), Vec2d(1.2, -0.4)}).particlesAdded, 0u);
+        return w;
+    };
+    auto anyAsleep = [](const World& w) {
+        for (Index p = 0; p < w.cloth.particleCount(); ++p)
+            if (w.cloth.asleep(p)) return true;
+        return false;
+    };
+    World reference = cutCurtain();
+    int sleepsAt = 0;
+    while (!anyAsleep(reference) && sleepsAt < 1200) reference.step(), ++sleepsAt;
+    ASSERT_TRUE(anyAsleep(reference));
+    ASSERT_FALSE(reference.asleep) << "the strip sleeps before the World does";
+    World settling = cutCurtain();
+    for (int f = 0; f < sleepsAt - 30; ++f) settling.step();
+    ASSERT_FALSE(anyAsleep(settling));
+    expectExactContinuation(settling, 60, "a torn piece at rest, not yet asleep");
+    EXPECT_TRUE(anyAsleep(settling));
+    expectExactContinuation(settling, 10, "a torn piece asleep");
+}
+
 // The integrators' own state: Verlet's half kicks, implicit Euler's warm start, XPBD.
 TEST(WorldFile, EveryIntegratorContinuesBitForBit) {
     for (const char* integrator : {"verlet", "implicit-euler", "xpbd", "forward-euler"}) {
@@ -196,10 +224,11 @@ TEST(WorldFile, ContinuationTestCanFail) {
     for (int f = 0; f < 10; ++f) implicit.step();
     bytes = bytesOf(implicit);
     const size_t free = 3 * 56; // 64 particles, 8 pinned
+    const size_t still = 8 + 2 * 64; // then the particles' still frames (version 4) end the file
     uint64_t m = 0;
-    std::memcpy(&m, bytes.data() + bytes.size() - 8 * free - 8, 8);
-    ASSERT_EQ(m, free) << "the warm start is the file's last values";
-    std::fill(bytes.end() - 8 * free, bytes.end(), '\0');
+    std::memcpy(&m, bytes.data() + bytes.size() - still - 8 * free - 8, 8);
+    ASSERT_EQ(m, free) << "the warm start is the last values before the still frames";
+    std::fill(bytes.end() - still - 8 * free, bytes.end() - still, '\0');
     Result<World> cold = parseWorld(bytes, "w.ctw");
     ASSERT_TRUE(cold.ok()) << cold.error;
     World warm = reloaded(implicit);
@@ -287,10 +316,10 @@ TEST(WorldFileErrors, WrongMagicAndVersions) {
     std::string bytes = bytesOf(smallTornWorld());
     EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
               "bad.ctw: byte 0 (header): not a clothtear world file (it does not start with 'clothtear world\\x0a')");
-    poke<uint32_t>(bytes, 16, 4);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 4: written by a newer clothtear; this one reads versions 2 to 3");
+    poke<uint32_t>(bytes, 16, 5);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 5: written by a newer clothtear; this one reads versions 2 to 4");
     poke<uint32_t>(bytes, 16, 1);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads versions 2 to 3)");
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads versions 2 to 4)");
 }
 
 TEST(WorldFileErrors, CountsThatLieAllocateNothing) {
@@ -310,6 +339,13 @@ TEST(WorldFileErrors, CountsThatLieAllocateNothing) {
     bytes = good;
     poke<uint64_t>(bytes, sectionBody(bytes, "TRIS") - 8, 1ull << 40);
     EXPECT_NE(refusal(bytes).find("(triangles): the section says it has 1099511627776 bytes"), std::string::npos);
+    // The torn pieces' still frames (the end of the step state): one per particle, or none.
+    const size_t n = smallTornWorld().cloth.particleCount();
+    const size_t still = good.size() - 2 * n - 8; // the file's last values
+    bytes = good;
+    poke<uint64_t>(bytes, still, uint64_t(n - 1));
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte " + std::to_string(still) + " (step state): still frames for " +
+                                  std::to_string(n - 1) + " particles; the cloth has " + std::to_string(n));
 }
 
 TEST(WorldFileErrors, NonFiniteOrFarValuesNameTheirField) {

@@ -23,6 +23,8 @@ enum ParticleFlags : uint8_t {
     kTouched = 1u << 3, // under a ball this sub-step (set by the collide phase, cleared by the contact phase)
     kHem = 1u << 4,     // on an edge the pin mode pinned: springs touching it tear at tear.seam_strength x the
                         // threshold (a sewn hem stays strong when a tool unpins it)
+    kAsleep = 1u << 5,  // in a torn piece that settled (step/piece_sleep.cpp): inverse mass 0 and no velocity
+                        // until something can move it
 };
 
 // A spring as the hot loops see it. Per-spring constants come from the material at use:
@@ -91,6 +93,8 @@ struct Cloth {
     size_t particleCount() const { return x.size(); }
     double particleMass(Index p) const { return density * areaShare[p]; }
     bool pinned(Index p) const { return flags[p] & kPinned; }
+    bool asleep(Index p) const { return flags[p] & kAsleep; }
+    void setAsleep(Index p, bool on); // asleep: inverse mass 0 (like a pin) and velocity 0
     void setPinned(Index p, bool on);
     void setDensity(float density);
     void refreshInvMass(Index p);

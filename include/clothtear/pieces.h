@@ -14,7 +14,12 @@ struct Piece {
     double restArea = 0; // m^2: the rest area of its triangles
     double mass = 0;     // kg: density x rest area
     Index firstTriangle = kNone; // its lowest-numbered triangle (World::deletePiece takes it)
+    bool asleep = false;         // settled and not simulated (src/core/step/piece_sleep.cpp)
 };
+
+// Per particle, the piece it belongs to, named by the piece's lowest-numbered particle; kNone for a
+// particle no triangle uses.
+std::vector<Index> pieceLabels(const Cloth& cloth);
 
 // The pieces of `cloth`, largest rest area first (ties: fewer triangles first, then the order in
 // which their first triangles appear). An untorn cloth is one piece with its whole rest area.

@@ -22,7 +22,9 @@ namespace clothtear {
 // Version 2: knife cuts (a fourth tear count, TearMode::Knife, and the number of knife strokes).
 // Version 3: the kes hinges' memory (Cloth::bendMemory) after the bend springs; a version 2 file
 //            reads as one without (a linear cloth, or kes hinges at rest).
-inline constexpr uint32_t kWorldFileVersion = 3;
+// Version 4: the frames each particle has been still (torn pieces' sleep) at the end of the step
+//            state; an older file's particles start counting at the load.
+inline constexpr uint32_t kWorldFileVersion = 4;
 inline constexpr uint32_t kOldestWorldFileVersion = 2;
 
 // Largest world file loadWorld reads (refused before reading).

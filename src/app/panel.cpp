@@ -284,7 +284,7 @@ void piecesList(AppState& st, const std::vector<Piece>& pieces) {
         ImGui::PushID(int(k));
         if (ImGui::SmallButton("Delete")) st.requestDeletePiece = int64_t(p.firstTriangle);
         ImGui::SameLine();
-        ImGui::Text("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
+        ImGui::Text("%.3g m^2  %.3g g  %zu tri.%s", p.restArea, 1000.0 * p.mass, p.triangles, p.asleep ? "  asleep" : "");
         ImGui::PopID();
     }
     if (pieces.size() > kShown) ImGui::TextDisabled("... %zu smaller", pieces.size() - kShown);

@@ -24,11 +24,14 @@ namespace {
 nlohmann::json piecesReport(const Cloth& cloth) {
     const std::vector<Piece> pieces = findPieces(cloth);
     nlohmann::json areas = nlohmann::json::array(), masses = nlohmann::json::array();
+    size_t asleep = 0;
+    for (const Piece& p : pieces) asleep += p.asleep;
     for (size_t k = 0; k < pieces.size() && k < 32; ++k) {
         areas.push_back(pieces[k].restArea);
         masses.push_back(pieces[k].mass);
     }
     return nlohmann::json{{"count", pieces.size()},
+                          {"asleep", asleep}, // torn pieces that settled and are not simulated
                           {"areas", areas},
                           {"masses", masses},
                           {"smallest_area", pieces.empty() ? 0.0 : pieces.back().restArea},

@@ -43,13 +43,23 @@ void refreshSpringWeight(Cloth& cloth, Index s) {
 
 void Cloth::refreshInvMass(Index p) {
     const double m = particleMass(p);
-    invMass[p] = (flags[p] & kPinned) || m <= 0.0 ? 0.0f : static_cast<float>(1.0 / m);
+    invMass[p] = (flags[p] & (kPinned | kAsleep)) || m <= 0.0 ? 0.0f : static_cast<float>(1.0 / m);
     massRevision = nextUniqueRevision();
 }
 
 void Cloth::setPinned(Index p, bool on) {
     if (on) flags[p] |= kPinned;
     else flags[p] &= static_cast<uint8_t>(~kPinned);
+    refreshInvMass(p);
+}
+
+void Cloth::setAsleep(Index p, bool on) {
+    if (on) {
+        flags[p] |= kAsleep;
+        v[p] = Vec3::Zero();
+    } else {
+        flags[p] &= static_cast<uint8_t>(~kAsleep);
+    }
     refreshInvMass(p);
 }
 

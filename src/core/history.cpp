@@ -98,6 +98,8 @@ void visitState(W& w, S& carry, F& f) {
     f.value(carry.sleep.lo);
     f.value(carry.sleep.hi);
     f.array(carry.sleep.frameStart);
+    f.array(carry.sleep.stillFrames);
+    f.value(carry.sleep.pieceSettings);
     f.warmStart(carry.implicit, w.cloth);
 }
 

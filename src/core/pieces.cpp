@@ -15,17 +15,32 @@ Index findRoot(std::vector<Index>& parent, Index p) {
     return p;
 }
 
-} // namespace
-
-std::vector<Piece> findPieces(const Cloth& cloth) {
-    const size_t n = cloth.particleCount();
-    std::vector<Index> parent(n);
+// Union-find over particles, each triangle joining its corners; the roots are the lowest-numbered
+// particle of each island.
+std::vector<Index> unionOfTriangles(const Cloth& cloth) {
+    std::vector<Index> parent(cloth.particleCount());
     std::iota(parent.begin(), parent.end(), Index(0));
     for (const Triangle& t : cloth.triangles)
         for (int k = 1; k < 3; ++k) {
             const Index a = findRoot(parent, t.p[0]), b = findRoot(parent, t.p[k]);
             if (a != b) parent[std::max(a, b)] = std::min(a, b);
         }
+    return parent;
+}
+
+} // namespace
+
+std::vector<Index> pieceLabels(const Cloth& cloth) {
+    std::vector<Index> parent = unionOfTriangles(cloth);
+    std::vector<Index> label(cloth.particleCount(), kNone);
+    for (Index p = 0; p < label.size(); ++p)
+        if (!cloth.particleTris[p].empty()) label[p] = findRoot(parent, p);
+    return label;
+}
+
+std::vector<Piece> findPieces(const Cloth& cloth) {
+    const size_t n = cloth.particleCount();
+    std::vector<Index> parent = unionOfTriangles(cloth);
     // One piece per root that owns a triangle, numbered in order of its first triangle (the sort
     // below is stable, so that order breaks ties).
     std::vector<int64_t> pieceOf(n, -1);
@@ -41,11 +56,17 @@ std::vector<Piece> findPieces(const Cloth& cloth) {
         piece.triangles++;
         piece.restArea += t.restArea;
     }
+    std::vector<size_t> asleep(pieces.size(), 0);
     for (size_t p = 0; p < n; ++p) {
         const int64_t k = pieceOf[findRoot(parent, Index(p))];
-        if (k >= 0) pieces[size_t(k)].particles++;
+        if (k < 0) continue;
+        pieces[size_t(k)].particles++;
+        asleep[size_t(k)] += cloth.asleep(Index(p));
     }
-    for (Piece& piece : pieces) piece.mass = double(cloth.density) * piece.restArea;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        pieces[k].mass = double(cloth.density) * pieces[k].restArea;
+        pieces[k].asleep = asleep[k] == pieces[k].particles;
+    }
     std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
         if (a.restArea != b.restArea) return a.restArea > b.restArea;
         return a.triangles < b.triangles;

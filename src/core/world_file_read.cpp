@@ -46,6 +46,7 @@ class ByteReader {
     [[noreturn]] void failAt(size_t offset, const std::string& what) const { throw FormatError{offset, section_, what}; }
 
     uint8_t u8() { return uint8_t(take(1)[0]); }
+    uint16_t u16() { return uint16_t(le(take(2))); }
     uint32_t u32() { return uint32_t(le(take(4))); }
     uint64_t u64() { return le(take(8)); }
     float f32() { return std::bit_cast<float>(u32()); }
@@ -181,7 +182,7 @@ void readParticles(ByteReader& r, Cloth& c) {
     const size_t n = r.count(r.u64(), kParticleBytes, "particle");
     c.x.resize(n), c.v.resize(n), c.invMass.assign(n, 0.f), c.areaShare.resize(n), c.rest.resize(n);
     c.flags.resize(n), c.particleTris.resize(n);
-    constexpr uint8_t kKnownFlags = kPinned | kWeak | kHinge | kTouched | kHem;
+    constexpr uint8_t kKnownFlags = kPinned | kWeak | kHinge | kTouched | kHem | kAsleep;
     for (size_t p = 0; p < n; ++p) {
         const std::string at = "particle " + std::to_string(p) + ": ";
         c.x[p] = boundedVec<Vec3>(r, kMaxCoordinate, at + "position");
@@ -344,7 +345,7 @@ void readWorldScalars(ByteReader& r, World& w) {
 
 // The step's state that outlives a frame (world_file_write.cpp, writeStepState), back into a fresh
 // StepState whose caches the first step rebuilds.
-void readStepState(ByteReader& r, World& w, StepState& s) {
+void readStepState(ByteReader& r, World& w, StepState& s, uint32_t version) {
     r.beginSection(kSecStep);
     const Cloth& c = w.cloth;
     const uint8_t verlet = r.u8();
@@ -368,6 +369,7 @@ void readStepState(ByteReader& r, World& w, StepState& s) {
     readSettings(r, sleep.settings);
     if (w.asleep && r.offset() == snapshotAt + 4)
         r.failAt(snapshotAt, "the cloth is asleep but the parameters it fell asleep with are missing");
+    sleep.pieceSettings = w.settings;
     const uint64_t unknowns = r.u64();
     if (unknowns > 0) {
         size_t free = 0;
@@ -386,6 +388,14 @@ void readStepState(ByteReader& r, World& w, StepState& s) {
         s.implicit.stamp.valid = true;
         s.implicit.stamp.built.topology = c.topologyRevision;
         s.implicit.stamp.built.mass = c.massRevision;
+    }
+    if (version >= 4) { // torn pieces' sleep (piece_sleep.cpp): frames each particle has been still
+        const uint64_t still = r.u64();
+        if (still != 0 && still != c.particleCount())
+            r.fail("still frames for " + std::to_string(still) + " particles; the cloth has " +
+                   std::to_string(c.particleCount()));
+        sleep.stillFrames.resize(r.count(still, 2, "still frame count"));
+        for (uint16_t& f : sleep.stillFrames) f = r.u16();
     }
     r.endSection();
 }
@@ -424,7 +434,7 @@ World readWorld(ByteReader& r, std::string_view bytes) {
     if (w.cloth.particleCount() == 0) w.cloth.massRevision = nextUniqueRevision();
     readBodies(r, w);
     readWorldScalars(r, w);
-    readStepState(r, w, w.stepState());
+    readStepState(r, w, w.stepState(), version);
     if (r.offset() != bytes.size())
         r.failAt(r.offset(), std::to_string(bytes.size() - r.offset()) + " bytes after the last section");
     return w;

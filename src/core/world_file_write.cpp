@@ -21,6 +21,7 @@ class ByteWriter {
   public:
     std::string out;
     void u8(uint8_t v) { out.push_back(char(v)); }
+    void u16(uint16_t v) { u8(uint8_t(v & 0xff)), u8(uint8_t(v >> 8)); }
     void u32(uint32_t v) {
         for (int i = 0; i < 4; ++i) out.push_back(char((v >> (8 * i)) & 0xff));
     }
@@ -184,6 +185,12 @@ void writeStepState(ByteWriter& w, const World& world) {
     const Eigen::VectorXd& dv = warm ? slot.cache->dv : none;
     w.u64(uint64_t(dv.size()));
     for (Eigen::Index i = 0; i < dv.size(); ++i) w.f64(dv[i]);
+    // Torn pieces (piece_sleep.cpp): frames each particle has been still; particles added since the
+    // last frame (a knife cut) have 0, as the next frame gives them.
+    const size_t n = world.cloth.particleCount();
+    w.u64(sleep.stillFrames.empty() ? 0 : n);
+    if (!sleep.stillFrames.empty())
+        for (size_t p = 0; p < n; ++p) w.u16(p < sleep.stillFrames.size() ? sleep.stillFrames[p] : 0);
     w.endSection();
 }
 

@@ -16,20 +16,17 @@
 #include <limits>
 
 namespace clothtear {
-namespace {
 
-// Any parameter changed since the cloth fell asleep (compared by value through the parameter table).
 bool paramsChanged(const Settings& now, const Settings& then) {
     for (const ParamInfo& p : allParams())
         if (getParam(now, p) != getParam(then, p)) return true;
     return false;
 }
 
-} // namespace
-
 void World::wake() {
     asleep = false;
     state_->sleep.restSince = -1;
+    wakePieces(*this, *state_);
 }
 
 bool stayAsleep(World& w, StepState& state) {

@@ -9,4 +9,14 @@ bool stayAsleep(World& world, StepState& state);
 // After a frame: at rest long enough to fall asleep?
 void updateSleep(World& world, StepState& state);
 
+// Any parameter differs (compared by value through the parameter table).
+bool paramsChanged(const Settings& now, const Settings& then);
+
+// Torn pieces (piece_sleep.cpp). Before a frame the World simulates: wakes the sleeping pieces if
+// something can move them. After it: puts the pieces that settled to sleep.
+void wakePiecesIfTouched(World& world, StepState& state);
+void updatePieceSleep(World& world, StepState& state);
+// Wakes every sleeping piece (World::wake).
+void wakePieces(World& world, StepState& state);
+
 } // namespace clothtear

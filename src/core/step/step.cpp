@@ -102,6 +102,7 @@ void World::step() {
         ++sleptFrames;
         return;
     }
+    wakePiecesIfTouched(*this, state);
     if (settings.sleep.enabled) state.sleep.frameStart = cloth.x;
     frameSubsteps = guardSubsteps();
     state.substepsNow = frameSubsteps;
@@ -113,6 +114,7 @@ void World::step() {
     guardDampingKept = springsExplicit ? state.springs.dampingKept : 1.f;
     phaseBookkeeping(*this);
     ++steps;
+    updatePieceSleep(*this, state); // first: the World's sleep then records the masses it leaves
     updateSleep(*this, state);
 }
 

@@ -120,6 +120,14 @@ struct SleepState {
     uint64_t topology = 0, mass = 0;
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero(); // m, the cloth's box
     std::vector<Vec3> frameStart;             // positions at the start of the frame, with sleep on
+    // Torn pieces (piece_sleep.cpp): frames in a row each particle moved slower than sleep.speed
+    // (saturating), and the parameters at the last frame (a change wakes the pieces).
+    std::vector<uint16_t> stillFrames;
+    Settings pieceSettings;
+    // Cache: the pieces as particle labels (pieces.h pieceLabels) for this topology revision.
+    std::vector<Index> labels;
+    uint64_t labelsTopology = 0;
+    size_t labelCount = 0;
 };
 
 // Per-thread work arrays of the step (threads: see threadsFor in step_context.h).
