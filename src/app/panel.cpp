@@ -277,14 +277,23 @@ void piecesList(AppState& st, const std::vector<Piece>& pieces) {
         ImGui::Text("pieces %zu", pieces.size());
         return;
     }
-    if (!ImGui::TreeNode("pieces", "pieces %zu (smallest %.3g m^2)", pieces.size(), pieces.back().restArea)) return;
+    size_t asleep = 0;
+    for (const Piece& p : pieces) asleep += p.asleep;
+    const bool open = asleep > 0 ? ImGui::TreeNode("pieces", "pieces %zu, %zu asleep (smallest %.3g m^2)", pieces.size(),
+                                                   asleep, pieces.back().restArea)
+                                 : ImGui::TreeNode("pieces", "pieces %zu (smallest %.3g m^2)", pieces.size(),
+                                                   pieces.back().restArea);
+    if (!open) return;
     constexpr size_t kShown = 12;
     for (size_t k = 0; k < pieces.size() && k < kShown; ++k) {
         const Piece& p = pieces[k];
         ImGui::PushID(int(k));
         if (ImGui::SmallButton("Delete")) st.requestDeletePiece = int64_t(p.firstTriangle);
         ImGui::SameLine();
-        ImGui::Text("%.3g m^2  %.3g g  %zu tri.%s", p.restArea, 1000.0 * p.mass, p.triangles, p.asleep ? "  asleep" : "");
+        // A sleeping piece (settled, not simulated until touched: piece_sleep.cpp) is greyed.
+        if (p.asleep) ImGui::TextDisabled("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
+        else ImGui::Text("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
+        if (p.asleep && ImGui::IsItemHovered()) ImGui::SetTooltip("Asleep: it settled and is not simulated until touched");
         ImGui::PopID();
     }
     if (pieces.size() > kShown) ImGui::TextDisabled("... %zu smaller", pieces.size() - kShown);

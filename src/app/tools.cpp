@@ -140,6 +140,7 @@ int applyWind(World& world, const WindSource& source, float radiusPx, float pres
     const auto hits = particlesInScreenRadius(c, source.view.viewProjection, source.view.width, source.view.height,
                                               source.center, radiusPx);
     for (const WeightedParticle& h : hits) {
+        if (c.asleep(h.particle)) world.wake(); // a sleeping torn piece: its inverse mass comes back
         if (c.invMass[h.particle] == 0.f) continue;
         // a = F / m = pressure * areaShare * invMass
         const float a = pressure * float(c.areaShare[h.particle]) * c.invMass[h.particle] * h.weight;
@@ -153,6 +154,7 @@ int applyScreenImpulse(World& world, const View& view, const Vec2& cursor, float
     const auto hits = particlesInScreenRadius(world.cloth, view.viewProjection, view.width, view.height, cursor, radiusPx);
     int n = 0;
     for (const WeightedParticle& h : hits) {
+        if (world.cloth.asleep(h.particle)) world.wake(); // a sleeping torn piece: its inverse mass comes back
         if (world.cloth.invMass[h.particle] == 0.f) continue;
         addVelocity(world, h.particle, dir * (dv * h.weight));
         ++n;
