@@ -42,7 +42,8 @@ void RipSynth::add(const SoundEvent& e) {
     rate_ *= std::exp(-std::max(0.0, e.time - rateAt_) / s_.rateTime);
     rateAt_ = std::max(rateAt_, e.time);
     rate_ += e.length / s_.rateTime;
-    const double energy = std::max(0.f, e.energyDensity) / s_.referenceDensity; // relative
+    double energy = std::max(0.f, e.energyDensity) / s_.referenceDensity; // relative
+    if (e.mode == TearMode::Knife) energy = std::max(energy, double(s_.knifeEnergy));
     // Equal-power pan.
     const double angle = (std::clamp(e.pan, -1.f, 1.f) + 1.0) * kPi / 4;
     const float left = float(std::cos(angle)), right = float(std::sin(angle));
@@ -68,6 +69,7 @@ void RipSynth::add(const SoundEvent& e) {
     double seconds = std::clamp(0.006 * std::pow(speed, -0.3), 0.002, 0.012);
     if (e.mode == TearMode::OnePoint) centre *= 0.5, q = 0.7, seconds *= 2; // two parts let go: a pop
     if (e.impact) centre *= 0.6, q = 1.0;                                    // a hit: darker, wider
+    if (e.mode == TearMode::Knife) centre = 8000.0, q = 4.0, seconds = 0.0025; // a blade: a snip
     centre = std::min(centre, 0.4 * fs);
     const int length = std::max(8, int(seconds * fs));
     // RBJ band-pass, 0 dB at the centre: b = (alpha, 0, -alpha) / a0, a = (1, -2 cos w, 1 - alpha) / a0.
