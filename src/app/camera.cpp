@@ -1,6 +1,8 @@
 // Orbit camera math. Conventions as in OpenGL: right-handed world, y up, clip z in [-1, 1].
 #include "camera.h"
 
+#include "clothtear/pieces.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -117,9 +119,23 @@ void frameWorld(OrbitCamera& camera, const World& world) {
     Vec3d restLo = Vec3d::Constant(1e300), restHi = Vec3d::Constant(-1e300);
     for (const Vec3d& r : c.rest) restLo = restLo.cwiseMin(r), restHi = restHi.cwiseMax(r);
     const float reach = std::max(0.5f, 0.75f * float((restHi - restLo).norm()));
+    // Torn pieces of at least kFramedShare of the rest area are framed wherever they are (a strip torn
+    // off and lying on the ground); smaller ones only within reach of the median point.
+    constexpr double kFramedShare = 0.05;
+    const std::vector<Index> label = pieceLabels(c);
+    std::vector<double> area(c.particleCount(), 0.0);
+    double total = 0;
+    for (const Triangle& t : c.triangles) {
+        if (label[t.p[0]] != kNone) area[label[t.p[0]]] += t.restArea;
+        total += t.restArea;
+    }
     Vec3 lo = Vec3::Constant(1e30f), hi = Vec3::Constant(-1e30f);
-    for (const Vec3& x : finite)
-        if ((x - median).norm() <= reach) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    for (Index p = 0; p < c.particleCount(); ++p) {
+        const Vec3& x = c.x[p];
+        if (!x.allFinite()) continue;
+        const bool bigPiece = label[p] != kNone && area[label[p]] >= kFramedShare * total;
+        if (bigPiece || (x - median).norm() <= reach) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    }
     for (const Ball& b : world.balls)
         if (b.x.allFinite() && (b.x - median).norm() <= reach + b.radius)
             lo = lo.cwiseMin(b.x - Vec3::Constant(b.radius)), hi = hi.cwiseMax(b.x + Vec3::Constant(b.radius));

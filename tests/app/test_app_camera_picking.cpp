@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 using namespace clothtear;
 using namespace clothtear::app;
 
@@ -55,6 +59,34 @@ TEST(AppCamera, FrameFitsTheBox) {
     const float before = cam.distance;
     cam.zoom(1.f);
     EXPECT_LT(cam.distance, before);
+}
+
+// V frames the cloth and its torn pieces: the curtain cut across, its strip (30 % of the area)
+// fallen 2.6 m to the ground, is in the picture with the curtain, at 16 and 32 a side.
+TEST(AppCamera, FrameWorldShowsATornOffStripOnTheGround) {
+    for (int res : {16, 32}) {
+        World w;
+        const std::string r = std::to_string(res);
+        const std::vector<std::string> sets = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r};
+        ASSERT_EQ(loadScene(w, "curtain", sets), "");
+        w.step();
+        ASSERT_GT(w.cut({Vec2d(-1.2, -0.4), Vec2d(1.2, -0.4)}).particlesAdded, 0u);
+        for (int f = 0; f < 180; ++f) w.step();
+        OrbitCamera cam;
+        frameWorld(cam, w);
+        const Mat4 vp = cam.viewProjection(1280.f / 720.f);
+        float lowest = 1e30f;
+        for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+            lowest = std::min(lowest, w.cloth.x[p].y());
+            Vec2 px;
+            ASSERT_TRUE(projectToWindow(vp, w.cloth.x[p], 1280.f, 720.f, px)) << res << ": particle " << p;
+            EXPECT_GE(px.y(), 0.f) << res << ": particle " << p;
+            EXPECT_LE(px.y(), 720.f) << res << ": particle " << p;
+            EXPECT_GE(px.x(), 0.f) << res << ": particle " << p;
+            EXPECT_LE(px.x(), 1280.f) << res << ": particle " << p;
+        }
+        EXPECT_LT(lowest, -2.8f) << res << ": the strip is on the ground";
+    }
 }
 
 TEST(AppPicking, RayTriangleHitsInsideAndMissesOutside) {
