@@ -78,8 +78,8 @@ bool driversMove(const std::vector<Driver>& drivers) {
 // may stretch springs past the limit (issue 12, goal 5), and chasing it to convergence every
 // sub-step, with the cloth taut between the hand and the pins, ran the passes to the cap in most
 // sub-steps: a curtain dragged sideways in the app (assets/screenshots/tear.txt) took 1.9 s per
-// frame at 128 x 128 (70 % of the sub-steps at 512 passes) and 175 ms at 80 x 80; with the drivers'
-// cap, 38 and 5.8 ms, and the drag rips at 40, 80 and 128.
+// frame at 128 x 128 (70 % of the sub-steps at 512 passes) and 178 ms at 80 x 80; with the drivers'
+// cap, 33 and 5.4 ms, and the drag rips at 40, 80, 128 and 160 (bench/README.md, "Dragging").
 constexpr int kPassesPerDepth = 4;
 int passCap(const StepContext& ctx, const Cloth& cloth, const LimitCache& C) {
     const LimitSettings& L = ctx.settings->limit;
