@@ -4,6 +4,7 @@
 
 #include <GL/glew.h>
 #include <array>
+#include <initializer_list>
 #include <string>
 
 namespace clothtear::app {
@@ -11,6 +12,22 @@ namespace clothtear::app {
 // Compiles shaders/<vertex> and shaders/<fragment> (embedded sources) and links them.
 // The error names the shader and carries the driver's log.
 Result<GLuint> buildProgram(const char* vertexName, const char* fragmentName);
+
+// Float vertex attributes read from the bound GL_ARRAY_BUFFER, interleaved in the order of `sizes`
+// (components each) at locations first, first + 1, ...: one call describes one buffer's layout.
+inline void floatAttributes(std::initializer_list<int> sizes, GLuint first = 0) {
+    int floats = 0;
+    for (int s : sizes) floats += s;
+    GLuint location = first;
+    size_t at = 0;
+    for (int s : sizes) {
+        glEnableVertexAttribArray(location);
+        glVertexAttribPointer(location, s, GL_FLOAT, GL_FALSE, GLsizei(floats * sizeof(float)),
+                              reinterpret_cast<void*>(at * sizeof(float)));
+        ++location;
+        at += size_t(s);
+    }
+}
 
 inline GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
 inline void setVec3(GLuint program, const char* name, const std::array<float, 3>& v) {

@@ -45,16 +45,10 @@ std::string Renderer::init() {
     glGenBuffers(1, &clothEbo_);
     glBindVertexArray(clothVao_);
     glBindBuffer(GL_ARRAY_BUFFER, clothDynamicVbo_);
-    const GLsizei stride = kDynamicFloats * sizeof(float);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+    static_assert(kDynamicFloats == 3 + 3 + 1, "position, normal, strain");
+    floatAttributes({3, 3, 1});
     glBindBuffer(GL_ARRAY_BUFFER, clothUvVbo_);
-    glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    floatAttributes({2}, 3);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
     glBindVertexArray(0);
 
@@ -64,13 +58,8 @@ std::string Renderer::init() {
     glGenBuffers(1, &fringeEbo_);
     glBindVertexArray(fringeVao_);
     glBindBuffer(GL_ARRAY_BUFFER, fringeVbo_);
-    const GLsizei fringeStride = kFringeFloats * sizeof(float);
-    const int fringeSizes[] = {3, 3, 2, 1, 1}; // position, normal, uv, thread, across
-    for (int a = 0, at = 0; a < 5; at += fringeSizes[a], ++a) {
-        glEnableVertexAttribArray(GLuint(a));
-        glVertexAttribPointer(GLuint(a), fringeSizes[a], GL_FLOAT, GL_FALSE, fringeStride,
-                              reinterpret_cast<void*>(size_t(at) * sizeof(float)));
-    }
+    static_assert(kFringeFloats == 3 + 3 + 2 + 1 + 1, "position, normal, uv, thread, across");
+    floatAttributes({3, 3, 2, 1, 1});
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, fringeEbo_);
     glBindVertexArray(0);
 
@@ -83,8 +72,7 @@ std::string Renderer::init() {
     glGenBuffers(1, &pointsEbo_);
     glBindVertexArray(overlayVao_);
     glBindBuffer(GL_ARRAY_BUFFER, particleVbo_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    floatAttributes({3});
     glBindVertexArray(0);
 
     // Ground quad.
@@ -94,8 +82,7 @@ std::string Renderer::init() {
     glBindVertexArray(groundVao_);
     glBindBuffer(GL_ARRAY_BUFFER, groundVbo_);
     glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    floatAttributes({2});
     glBindVertexArray(0);
 
     buildSphere();
@@ -128,10 +115,8 @@ void Renderer::buildSphere() {
     glBindVertexArray(sphereVao_);
     glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    floatAttributes({3});    // position
+    floatAttributes({3}, 1); // and the same floats as the normal (a unit sphere)
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphereEbo_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * sizeof(uint32_t)), idx.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
