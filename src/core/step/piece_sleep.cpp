@@ -63,12 +63,7 @@ void wakePiecesIfTouched(World& w, StepState& state) {
         Vec3 lo = Vec3::Constant(1e30f), hi = Vec3::Constant(-1e30f);
         for (Index p = 0; p < c.particleCount(); ++p)
             if (c.asleep(p)) lo = lo.cwiseMin(c.x[p]), hi = hi.cwiseMax(c.x[p]);
-        const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
-        const float T = settings.time.frameDt;
-        for (const Ball& b : w.balls) {
-            const float reach = b.radius + settings.collision.thickness + b.v.norm() * T + 0.5f * g.norm() * T * T;
-            touched |= !((b.x.array() + reach < lo.array()).any() || (b.x.array() - reach > hi.array()).any());
-        }
+        touched = aBallCanReach(w, lo, hi);
     }
     if (touched) wakePieces(w, state);
     S.pieceSettings = settings;

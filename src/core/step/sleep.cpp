@@ -17,6 +17,18 @@
 
 namespace clothtear {
 
+bool aBallCanReach(const World& w, const Vec3& lo, const Vec3& hi) {
+    const Settings& settings = w.settings;
+    const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
+    const float T = settings.time.frameDt;
+    for (const Ball& b : w.balls) {
+        // Where the ball can be by the end of the frame (gravity included), grown by its radius.
+        const float reach = b.radius + settings.collision.thickness + b.v.norm() * T + 0.5f * g.norm() * T * T;
+        if (!((b.x.array() + reach < lo.array()).any() || (b.x.array() - reach > hi.array()).any())) return true;
+    }
+    return false;
+}
+
 bool paramsChanged(const Settings& now, const Settings& then) {
     for (const ParamInfo& p : allParams())
         if (getParam(now, p) != getParam(then, p)) return true;
@@ -35,17 +47,9 @@ bool stayAsleep(World& w, StepState& state) {
     const Settings& settings = w.settings;
     const SleepState& S = state.sleep;
     // A pin set or released changes the cloth's mass revision (Cloth::setPinned).
-    bool touched = !settings.sleep.enabled || !w.drivers.empty() || windBlows(settings) ||
-                   w.cloth.topologyRevision != S.topology || w.cloth.massRevision != S.mass ||
-                   paramsChanged(settings, S.settings);
-    const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
-    for (const Ball& b : w.balls) {
-        // Where the ball can be by the end of the frame (gravity included), grown by its radius.
-        const float T = settings.time.frameDt;
-        const float reach =
-            b.radius + settings.collision.thickness + b.v.norm() * T + 0.5f * g.norm() * T * T;
-        touched |= !((b.x.array() + reach < S.lo.array()).any() || (b.x.array() - reach > S.hi.array()).any());
-    }
+    const bool touched = !settings.sleep.enabled || !w.drivers.empty() || windBlows(settings) ||
+                         w.cloth.topologyRevision != S.topology || w.cloth.massRevision != S.mass ||
+                         paramsChanged(settings, S.settings) || aBallCanReach(w, S.lo, S.hi);
     if (touched)
         w.wake();
     return w.asleep;

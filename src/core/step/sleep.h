@@ -9,6 +9,10 @@ bool stayAsleep(World& world, StepState& state);
 // After a frame: at rest long enough to fall asleep?
 void updateSleep(World& world, StepState& state);
 
+// A ball can reach the box [lo, hi] within the frame (where it can be by the frame's end, gravity
+// included, grown by its radius and the collision thickness).
+bool aBallCanReach(const World& world, const Vec3& lo, const Vec3& hi);
+
 // Any parameter differs (compared by value through the parameter table).
 bool paramsChanged(const Settings& now, const Settings& then);
 
