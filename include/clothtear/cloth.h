@@ -85,9 +85,9 @@ struct Cloth {
                                    // (pins, tears, density): the step's caches follow it at once, and
                                    // never take one cloth for another (src/core/step/revisions.h)
     float density = 0.2f;          // kg/m^2 used for mass lumping
-    // m. A basic tear halves the torn spring; springs shorter than this are not halved again (a tear
-    // front that keeps halving the same corner makes slivers of vanishing mass). Set by buildCloth
-    // to kMinSplitFraction of the mean structural rest length.
+    // m. Springs shorter than this are not split again (a front that keeps halving the same corner
+    // makes slivers of vanishing mass): the knife's floor; a basic tear's is minTearSplitRest. Set by
+    // buildCloth to kMinSplitFraction of the mean structural rest length.
     float minSplitRest = 0.f;
 
     size_t particleCount() const { return x.size(); }
@@ -104,9 +104,16 @@ struct Cloth {
     double totalUvArea() const;
 };
 
-// Springs down to this fraction of the mean rest length can be halved by a basic tear: three
-// halvings of an original edge, enough for tears to cross and branch.
+// Springs down to this fraction of the mean rest length can be split (the knife's floor: three
+// halvings of an original edge).
 constexpr double kMinSplitFraction = 0.125;
+// A basic tear halves springs down to this fraction of the mean rest length only: an edge of the
+// mesh once, not its halves. Halving the halves at a tear front made slivers of 1/4 and 1/8 of a
+// triangle hanging on one particle, which a one-point split then set loose (issue 13, no confetti:
+// the drag script at 40 a side left a 1.6 cm^2 scrap). A shorter spring over its threshold is held
+// by the limit like any other and the tear goes on through its weak points.
+constexpr double kMinTearSplitFraction = 0.5;
+inline float minTearSplitRest(const Cloth& c) { return c.minSplitRest * float(kMinTearSplitFraction / kMinSplitFraction); }
 
 // Builds the cloth from a mesh: particles at the rest positions, one spring per unique edge, one
 // bend-shear spring per interior edge. Refuses non-manifold edges (3+ triangles) and degenerate

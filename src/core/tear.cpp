@@ -68,12 +68,12 @@ bool basicTear(Cloth& c, Index s, float strain, const TearContext& ctx) {
     const Spring sp = c.springs[s];
     const SpringTopo topo = c.springTopo[s];
     const Index a = sp.a, b = sp.b;
-    // Never create a degenerate rest triangle or a sliver of vanishing mass: refuse to halve edges
-    // that are already short.
+    // Never create a degenerate rest triangle or a sliver: an edge of the mesh is halved once, its
+    // halves are not (minTearSplitRest, cloth.h).
     double scale = 0;
     for (Index t : topo.tri)
         if (t != kNone) scale = std::max(scale, c.triangles[t].restArea);
-    if (!(sp.rest > 1e-6f) || sp.rest < c.minSplitRest || !(scale > 1e-14)) return false;
+    if (!(sp.rest > 1e-6f) || sp.rest < minTearSplitRest(c) || !(scale > 1e-14)) return false;
 
     std::vector<Index> touched;
     const SplitEnds m = splitSpring(c, s, 0.5, true, touched);

@@ -113,7 +113,7 @@ private:
     // limited even as a candidate: if its tear fails (no weak-point path, too short for a basic
     // tear) it must not stay overstretched.
     bool exempt(const Spring& s, float len2) const {
-        if (len2 < sq(s.rest * minTearRatio_) || s.rest < minSplitRest_) return false;
+        if (len2 < sq(s.rest * minTearRatio_) || s.rest < minTearSplitRest_) return false;
         return len2 >= sq(s.rest * tearRatioOf(s)) &&
                std::sqrt(len2) / s.rest - 1.f >= exemptStrain_;
     }
@@ -143,7 +143,7 @@ private:
     ThreadBuffers& T_;
     const CorrectionParams P_;
     const int iterations_;
-    const float doneRatio_, heldDoneRatio_, minTearRatio_, minSplitRest_;
+    const float doneRatio_, heldDoneRatio_, minTearRatio_, minTearSplitRest_;
     const bool useTethers_;
     const bool gaussSeidel_;
     const uint32_t stamp0_;
@@ -164,7 +164,7 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       P_{ctx.settings->limit.relaxation, ctx.dt, ctx.velocityFix},
       iterations_(passCap(ctx, cloth, state.limit)), doneRatio_(ctx.maxRatio * (1.f + kLimitTolerance)),
       heldDoneRatio_(ctx.heldRatio * (1.f + kLimitTolerance)), minTearRatio_(std::min(ctx.tearRatio, ctx.weakRatio)),
-      minSplitRest_(cloth.minSplitRest),
+      minTearSplitRest_(minTearSplitRest(cloth)),
       useTethers_(ctx.limiting),
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
