@@ -89,6 +89,50 @@ TEST(TearThreshold, SpringTearsAtTheThresholdNotBelow) {
     EXPECT_EQ(tearsAtStrain(0.51, 0.5f), 1u);
 }
 
+// A basic tear halves an edge of the mesh, and not the halves again (minTearSplitRest, cloth.h): a
+// tear front that halved the same corner over and over made slivers of 1/4 and 1/8 of a triangle
+// hanging on one particle, which a one-point split then set loose (issue 13, no confetti). On a
+// grid of 5 and of 9 particles a side: an interior edge tears into two halves; a half does not
+// tear (no event, no new spring); another edge of the mesh still does.
+TEST(TearThreshold, ABasicTearHalvesAnEdgeOfTheMeshOnceNotItsHalves) {
+    for (int n : {5, 9}) {
+        Result<Cloth> built = buildCloth(makeGridMesh(n, n, 1.0, 1.0), 0.2f);
+        ASSERT_TRUE(built.ok()) << built.error;
+        Cloth c = std::move(built.value);
+        const double h = 1.0 / (n - 1);
+        // Two interior edges along x, away from each other and from the border.
+        std::vector<Index> edges;
+        for (Index s = 0; s < c.springs.size(); ++s) {
+            const Vec3d d = c.rest[c.springs[s].b] - c.rest[c.springs[s].a];
+            const Vec3d m = 0.5 * (c.rest[c.springs[s].a] + c.rest[c.springs[s].b]);
+            if (std::abs(std::abs(d.x()) - h) < 1e-9 && std::abs(d.y()) < 1e-9 && c.springTopo[s].tri[1] != kNone &&
+                (edges.empty() || (m - 0.5 * (c.rest[c.springs[edges[0]].a] + c.rest[c.springs[edges[0]].b])).norm() > 2.5 * h))
+                edges.push_back(s);
+        }
+        ASSERT_GE(edges.size(), 2u);
+        const Index second = edges[1];
+        const Vec3d secondA = c.rest[c.springs[second].a], secondB = c.rest[c.springs[second].b];
+        EXPECT_GT(h, minTearSplitRest(c)) << n << ": an edge of the mesh can be halved";
+        EXPECT_LT(0.5 * h, minTearSplitRest(c)) << n << ": its halves cannot";
+        TearSettings settings;
+        TearLog log;
+        const TearContext ctx{settings, 0.0, &log};
+        ASSERT_TRUE(forceTear(c, edges[0], ctx)) << n;
+        EXPECT_EQ(log.counts[int(TearMode::Basic)], 1u) << n;
+        Index half = kNone;
+        for (Index s = 0; s < c.springs.size(); ++s)
+            if (std::abs(c.springs[s].rest - 0.5 * h) < 1e-6 && c.springTopo[s].tri[1] != kNone) half = s;
+        ASSERT_NE(half, kNone) << n << ": the torn edge's halves, each shared by two half triangles";
+        const size_t springs = c.springs.size();
+        EXPECT_FALSE(forceTear(c, half, ctx)) << n << ": a half is not halved again";
+        EXPECT_EQ(c.springs.size(), springs) << n;
+        EXPECT_EQ(log.total(), 1u) << n;
+        EXPECT_TRUE(forceTear(c, springBetween(c, secondA, secondB), ctx)) << n << ": another edge of the mesh tears";
+        EXPECT_EQ(log.counts[int(TearMode::Basic)], 2u) << n;
+        EXPECT_EQ(validateCloth(c), "") << n;
+    }
+}
+
 // ============================================================================================== [WEAK]
 
 // An open fan around particle 0 at the origin: rim particles on the unit circle every 45 deg from
