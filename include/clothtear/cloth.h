@@ -107,8 +107,10 @@ struct Cloth {
 // Springs down to this fraction of the mean rest length can be split (the knife's floor: three
 // halvings of an original edge).
 constexpr double kMinSplitFraction = 0.125;
-// A basic tear halves springs down to this fraction of the mean rest length only: an edge of the
-// mesh once, not its halves. Halving the halves at a tear front made slivers of 1/4 and 1/8 of a
+// A basic tear halves springs down to this fraction of the mean rest length only: on a grid of
+// spacing h (mean about 1.14 h) an edge along a row or column once (its halves, 0.5 h, are under
+// 0.57 h), a diagonal twice at most; on a mesh of mixed sizes, edges under half the mean tear only
+// through weak points. Halving the halves at a tear front made slivers of 1/4 and 1/8 of a
 // triangle hanging on one particle, which a one-point split then set loose (issue 13, no confetti:
 // the drag script at 40 a side left a 1.6 cm^2 scrap). A shorter spring over its threshold is held
 // by the limit like any other and the tear goes on through its weak points.
