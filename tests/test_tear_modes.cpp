@@ -114,6 +114,8 @@ TEST(TearThreshold, ABasicTearHalvesAnEdgeOfTheMeshOnceNotItsHalves) {
         const Vec3d secondA = c.rest[c.springs[second].a], secondB = c.rest[c.springs[second].b];
         EXPECT_GT(h, minTearSplitRest(c)) << n << ": an edge of the mesh can be halved";
         EXPECT_LT(0.5 * h, minTearSplitRest(c)) << n << ": its halves cannot";
+        EXPECT_GT(std::sqrt(2.0) * h, minTearSplitRest(c)) << n << ": a diagonal can be halved";
+        EXPECT_LT(0.5 * std::sqrt(2.0) * h, minTearSplitRest(c)) << n << ": its halves cannot either";
         TearSettings settings;
         TearLog log;
         const TearContext ctx{settings, 0.0, &log};

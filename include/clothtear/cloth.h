@@ -107,14 +107,17 @@ struct Cloth {
 // Springs down to this fraction of the mean rest length can be split (the knife's floor: three
 // halvings of an original edge).
 constexpr double kMinSplitFraction = 0.125;
-// A basic tear halves springs down to this fraction of the mean rest length only: on a grid of
-// spacing h (mean about 1.14 h) an edge along a row or column once (its halves, 0.5 h, are under
-// 0.57 h), a diagonal twice at most; on a mesh of mixed sizes, edges under half the mean tear only
-// through weak points. Halving the halves at a tear front made slivers of 1/4 and 1/8 of a
+// A basic tear halves springs down to this fraction of the mean rest length only: an edge of the
+// mesh once, never its halves. On a grid of spacing h (mean about 1.14 h) rows and columns are
+// 0.88 of the mean and diagonals 1.24, their halves 0.44 and 0.62, so the floor sits between the
+// two groups with room on both sides; on a mesh of mixed sizes, edges under 0.7 of the mean tear
+// only through weak points. Halving the halves at a tear front made slivers of 1/4 and 1/8 of a
 // triangle hanging on one particle, which a one-point split then set loose (issue 13, no confetti:
-// the drag script at 40 a side left a 1.6 cm^2 scrap). A shorter spring over its threshold is held
-// by the limit like any other and the tear goes on through its weak points.
-constexpr double kMinTearSplitFraction = 0.5;
+// the drag script at 40 a side left a 1.6 cm^2 scrap with a floor of 0.5, which still let a
+// diagonal's half be halved: with the tethers to the pins' span (tethers.h) the pull scene pulled
+// sideways at 80 left a 0.0004 m^2 scrap that way). A shorter spring over its threshold is held by the limit
+// like any other and the tear goes on through its weak points.
+constexpr double kMinTearSplitFraction = 0.7;
 inline float minTearSplitRest(const Cloth& c) { return c.minSplitRest * float(kMinTearSplitFraction / kMinSplitFraction); }
 
 // Builds the cloth from a mesh: particles at the rest positions, one spring per unique edge, one

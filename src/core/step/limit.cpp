@@ -212,7 +212,7 @@ void LimitSolve::prepareTethers(int nt) {
             }
         for (const BallContact& c : state_.contacts)
             for (Index p : cloth_.triangles[c.triangle].p) seeds.push_back(p);
-        markTethersThrough(C_, seeds, C_.cut);
+        for (TetherSet& set : C_.tethers) markTethersThrough(set, seeds);
     }
     if (candidates > size_t(maxPerStep)) {
         std::vector<float> strains;
@@ -227,14 +227,24 @@ void LimitSolve::prepareTethers(int nt) {
 // moves what this one reads. With no candidates and no contacts (`anyFound` false) every tether pulls.
 void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
     if (!useTethers_) return;
-    const uint8_t* cut = anyFound ? C_.cut.data() : nullptr;
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     // A tether's pull can stretch the particle's other springs past the limit (sideways, towards
     // another anchor): the passes must see them. The scan read the positions before the pull.
     std::vector<Index>& moved = T_.moved[t];
     moved.clear();
-    tetherKernel(pc.begin, pc.end, C_.tether.data(), C_.length.data(), cut, ctx_.maxRatio * (1.f - kTetherSlack),
-                 ctx_.dt, ctx_.velocityFix, state_.packed.data(), x_, v_, moved);
+    PackedParticle* packed = state_.packed.data();
+    for (const TetherSet& set : C_.tethers) {
+        if (set.order.empty()) continue;
+        const size_t first = moved.size();
+        tetherKernel(pc.begin, pc.end, set.tether.data(), set.length.data(), anyFound ? set.cut.data() : nullptr,
+                     ctx_.maxRatio * (1.f - kTetherSlack), ctx_.dt, ctx_.velocityFix, packed, x_, v_, moved);
+        // The next set reads where this one put them (a thread moves only its own particles; the
+        // anchors are pinned).
+        for (size_t k = first; k < moved.size(); ++k) {
+            const Index p = moved[k];
+            for (int c = 0; c < 3; ++c) packed[p].x[c] = x_[p][c], packed[p].v[c] = v_[p][c];
+        }
+    }
     const uint32_t stamp = stamp0_ + uint32_t(iterations_) + 1;
     for (Index p : moved) movedIn_[p] = stamp;
     parallelBarrier(nt); // stamps complete (expand reads the other end's)

@@ -56,24 +56,33 @@ struct SpringCache {
     float stiffnessKept = 1, dampingKept = 1;
 };
 
+// Tether sets: the nearest anchor's, and one to each end of the anchors' span (tethers.h).
+inline constexpr int kTetherSets = 3;
+
+// One set of tethers (tethers.h): each particle's anchor in the set, the rest length of a spring
+// path to it, and the path itself as parents (for the tethers a tearing spring must stop).
+struct TetherSet {
+    std::vector<Index> tether; // per particle: its anchor if it has a tether to pull (not pinned), else kNone
+    std::vector<float> length; // m, per particle: rest length of the spring path to the anchor
+    std::vector<Index> parent; // per particle: previous particle on that path (kNone for anchors)
+    std::vector<Index> order;  // particles reached, breadth-first from the anchors (parents first)
+    std::vector<uint8_t> cut;  // per particle, this sub-step: its path runs through a tearing spring
+};
+
 // Per-topology data of the limit phase (limit.cpp, tethers.h) and its per-sub-step work arrays.
 // Tether anchors are the pinned particles no driver moves, so it depends on the drivers too.
 struct LimitCache {
     static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnDrivers;
     CacheStamp stamp;
-    // Tethers (long-range attachments).
-    std::vector<Index> anchor; // per particle: the pinned particle it hangs from, kNone if none
-    std::vector<Index> tether; // per particle: its anchor if it has a tether to pull (not pinned), else kNone
-    std::vector<float> length; // m, per particle: rest length of the spring path to the anchor
-    std::vector<Index> parent; // per particle: previous particle on that path (kNone for anchors)
-    std::vector<Index> order;  // particles reached, breadth-first from the anchors (parents first)
+    // Tethers (long-range attachments): tethers[0] to the nearest anchor, then one set to each end
+    // of the anchors' span (tethers.h); sets without anchors are empty.
+    std::array<TetherSet, kTetherSets> tethers;
     uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
     float meanRest = 0;        // m, mean rest length of the structural springs
     // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]).
     std::vector<uint32_t> springStart;
     std::vector<Index> springOf;
     // Work arrays, sized with the cloth.
-    std::vector<uint8_t> cut;    // per particle: its tether path runs through a tearing spring
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
     std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
     uint32_t passStamp = 0;      // last pass stamp used

@@ -1,10 +1,78 @@
-// Tether paths: a breadth-first search over structural springs from every anchor at once. Within
-// a breadth-first layer a particle keeps the shortest of the paths that reach it.
+// Tether paths: a breadth-first search over structural springs from a set of anchors at once.
+// Within a breadth-first layer a particle keeps the shortest of the paths that reach it.
 #include "tethers.h"
 
 #include <algorithm>
 
 namespace clothtear {
+namespace {
+
+// Fills `set` with the paths from `sources` (anchors) to every particle they reach; returns the
+// depth in springs of the farthest one. Particles with invMass 0 get no tether (nothing moves them).
+uint32_t breadthFirst(const Cloth& cloth, const LimitCache& t, const std::vector<Index>& sources, TetherSet& set) {
+    const size_t n = cloth.particleCount();
+    std::vector<Index> anchorOf(n, kNone);
+    set.length.assign(n, 0.f);
+    set.parent.assign(n, kNone);
+    set.cut.assign(n, 0);
+    set.order.clear();
+    set.order.reserve(sources.empty() ? 0 : n);
+    std::vector<uint32_t> layer(n, ~0u);
+    for (Index p : sources) {
+        anchorOf[p] = p;
+        layer[p] = 0;
+        set.order.push_back(p);
+    }
+    uint32_t deepest = 0;
+    size_t begin = 0;
+    for (uint32_t depth = 0; begin < set.order.size(); ++depth) {
+        const size_t end = set.order.size();
+        for (size_t i = begin; i < end; ++i) {
+            const Index p = set.order[i];
+            for (uint32_t k = t.springStart[p]; k < t.springStart[p + 1]; ++k) {
+                const Spring& s = cloth.springs[t.springOf[k]];
+                const Index o = s.a == p ? s.b : s.a;
+                const float len = set.length[p] + s.rest;
+                if (layer[o] == ~0u) {
+                    layer[o] = depth + 1;
+                    set.order.push_back(o);
+                } else if (layer[o] != depth + 1 || len >= set.length[o]) {
+                    continue;
+                }
+                anchorOf[o] = anchorOf[p];
+                set.length[o] = len;
+                set.parent[o] = p;
+            }
+        }
+        begin = end;
+        if (begin < set.order.size()) deepest = depth + 1;
+    }
+    // The particles a tether pulls: reached, and free (pinned ones never move).
+    set.tether.assign(n, kNone);
+    for (Index p = 0; p < n; ++p)
+        if (anchorOf[p] != kNone && anchorOf[p] != p && cloth.invMass[p] != 0.f) set.tether[p] = anchorOf[p];
+    return deepest;
+}
+
+// The two anchors farthest apart at rest (the second is the farthest from the first, which is the
+// farthest from the lowest-numbered anchor): the ends of a pinned edge, the two pinned corners.
+// Fewer than two anchors: none.
+std::array<Index, 2> spanEnds(const Cloth& cloth, const std::vector<Index>& anchors) {
+    if (anchors.size() < 2) return {kNone, kNone};
+    auto farthestFrom = [&](Index from) {
+        Index best = anchors[0];
+        double bestD2 = -1.0;
+        for (Index a : anchors) {
+            const double d2 = (cloth.rest[a] - cloth.rest[from]).squaredNorm();
+            if (d2 > bestD2) bestD2 = d2, best = a;
+        }
+        return best;
+    };
+    const Index first = farthestFrom(anchors[0]);
+    return {first, farthestFrom(first)};
+}
+
+} // namespace
 
 void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, LimitCache& t) {
     const size_t n = cloth.particleCount();
@@ -22,62 +90,31 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
         t.springOf[fill[cloth.springs[i].a]++] = i;
         t.springOf[fill[cloth.springs[i].b]++] = i;
     }
-    t.cut.assign(n, 0);
     t.moved.assign(n, 0);
     t.passStamp = 0;
     t.listed.assign(cloth.springs.size(), 0);
-
-    t.anchor.assign(n, kNone);
-    t.length.assign(n, 0.f);
-    t.parent.assign(n, kNone);
-    t.order.clear();
-    t.order.reserve(n);
-    t.depth = 0;
     double restSum = 0;
     for (const Spring& s : cloth.springs) restSum += s.rest;
     t.meanRest = cloth.springs.empty() ? 0.f : float(restSum / double(cloth.springs.size()));
-    std::vector<uint32_t> layer(n, ~0u);
+
+    std::vector<Index> anchors;
     for (Index p = 0; p < n; ++p)
-        if (anchor[p]) {
-            t.anchor[p] = p;
-            layer[p] = 0;
-            t.order.push_back(p);
-        }
-    size_t begin = 0;
-    for (uint32_t depth = 0; begin < t.order.size(); ++depth) {
-        const size_t end = t.order.size();
-        for (size_t i = begin; i < end; ++i) {
-            const Index p = t.order[i];
-            for (uint32_t k = start[p]; k < start[p + 1]; ++k) {
-                const Spring& s = cloth.springs[t.springOf[k]];
-                const Index o = s.a == p ? s.b : s.a;
-                const float len = t.length[p] + s.rest;
-                if (layer[o] == ~0u) {
-                    layer[o] = depth + 1;
-                    t.order.push_back(o);
-                } else if (layer[o] != depth + 1 || len >= t.length[o]) {
-                    continue;
-                }
-                t.anchor[o] = t.anchor[p];
-                t.length[o] = len;
-                t.parent[o] = p;
-            }
-        }
-        begin = end;
-        if (begin < t.order.size()) t.depth = depth + 1;
+        if (anchor[p]) anchors.push_back(p);
+    t.depth = breadthFirst(cloth, t, anchors, t.tethers[0]);
+    const std::array<Index, 2> ends = spanEnds(cloth, anchors);
+    for (int e = 0; e < 2; ++e) {
+        std::vector<Index> source;
+        if (ends[e] != kNone) source.push_back(ends[e]);
+        breadthFirst(cloth, t, source, t.tethers[1 + e]);
     }
-    // The particles a tether pulls: reached, and free (pinned ones never move).
-    t.tether.assign(n, kNone);
-    for (Index p = 0; p < n; ++p)
-        if (t.anchor[p] != kNone && t.anchor[p] != p && cloth.invMass[p] != 0.f) t.tether[p] = t.anchor[p];
 }
 
-void markTethersThrough(const LimitCache& t, const std::vector<Index>& seeds, std::vector<uint8_t>& cut) {
-    std::fill(cut.begin(), cut.end(), uint8_t(0));
-    for (Index p : seeds) cut[p] = 1;
+void markTethersThrough(TetherSet& set, const std::vector<Index>& seeds) {
+    std::fill(set.cut.begin(), set.cut.end(), uint8_t(0));
+    for (Index p : seeds) set.cut[p] = 1;
     // Parents come before their children in breadth-first order.
-    for (Index p : t.order)
-        if (t.parent[p] != kNone && cut[t.parent[p]]) cut[p] = 1;
+    for (Index p : set.order)
+        if (set.parent[p] != kNone && set.cut[set.parent[p]]) set.cut[p] = 1;
 }
 
 } // namespace clothtear

@@ -17,6 +17,16 @@
 // at most (1 + s) times the path's rest length), so it never pulls a cloth whose springs are all
 // within the limit; it only speeds up convergence. Paths are breadth-first (fewest springs, then
 // shortest) rather than exact geodesics: any path gives a valid tether, a longer one a looser one.
+//
+// Three sets (issue 12): to the nearest anchor, and to each of the two anchors farthest apart (the
+// ends of a pinned edge, the two pinned corners). One anchor bounds a particle's distance from one
+// point only: a 6 m cloth pinned on its left edge hung each particle from the pin of its own row,
+// and the cloth folded down under it, stretched along paths to the pins above, which only the
+// passes could pull back (4 x the depth and more: strain 0.109 at 65 a side and 0.112 at 129 after
+// 5 s, 311 and 1,260 sub-steps of the last second out of passes, 18 and 246 ms a frame). With the
+// tethers to the top and bottom pins too, it settles at the limit in every sub-step at 4 and 39 ms
+// (bench/README.md, "Does the cloth hold?"). Kim et al. attach a particle to several anchors for
+// the same reason. The span's ends are chosen at rest, so they do not depend on the resolution.
 #pragma once
 #include "clothtear/cloth.h"
 #include "step_state.h"
@@ -25,13 +35,13 @@
 
 namespace clothtear {
 
-// Rebuilds the tethers and the particle-to-spring table of `cache` for `cloth`: anchors are the
+// Rebuilds the tether sets and the particle-to-spring table of `cache` for `cloth`: anchors are the
 // particles with anchor[p] != 0 (pinned and not moved by a driver). Particles that no anchor
 // reaches through structural springs get no tether. Sizes the work arrays.
 void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, LimitCache& cache);
 
-// Marks in `cut` (size = particle count) every particle whose tether path runs through a particle
-// in `seeds`: their tethers must not pull this sub-step (a spring on the path is tearing).
-void markTethersThrough(const LimitCache& tethers, const std::vector<Index>& seeds, std::vector<uint8_t>& cut);
+// Marks in `set.cut` every particle whose tether path runs through a particle in `seeds`: their
+// tethers must not pull this sub-step (a spring on the path is tearing).
+void markTethersThrough(TetherSet& set, const std::vector<Index>& seeds);
 
 } // namespace clothtear
