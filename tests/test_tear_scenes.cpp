@@ -58,8 +58,8 @@ TEST(BallExperiments, OutcomesMatchTheThesisWithinTenPercentOfTheThreshold) {
 // Issue 12: the outcomes at twice the thesis resolution (96 x 96), where the unconverged solve
 // tore the ball that must slide over (ball-r2-v3: 156 tears). Three that fit the suite's time;
 // ball-r2-v10 (tears) takes 9 s here and holds too (bench/README.md, "Does the cloth hold?").
-// ball-r2-v3 still tears at 96 (7 tears as its ball slides off the bottom edge) and 144: the
-// issue's open part, not asserted.
+// ball-r2-v3 sits at the edge near 96 (0 tears on two threads, 28 on one, 22 at 88, 17 at 104, as
+// its ball slides off the bottom edge) and tears at 144: the issue's open part, not asserted.
 TEST(BallExperiments, OutcomesHoldAtTwiceTheResolution) {
     for (const BallCase& c : {BallCase{"ball-r0.5-v3", true}, BallCase{"ball-r1-v3-low", false},
                               BallCase{"ball-r1-v3-high", true}}) {
