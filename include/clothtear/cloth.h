@@ -115,8 +115,8 @@ constexpr double kMinSplitFraction = 0.125;
 // triangle hanging on one particle, which a one-point split then set loose (issue 13, no confetti:
 // the drag script at 40 a side left a 1.6 cm^2 scrap with a floor of 0.5, which still let a
 // diagonal's half be halved: with the tethers to the pins' span (tethers.h) the pull scene pulled
-// sideways at 80 left a 0.0004 m^2 scrap that way). A shorter spring over its threshold is held by the limit
-// like any other and the tear goes on through its weak points.
+// sideways at 80 left a 0.0004 m^2 scrap that way). A shorter spring over its threshold is held
+// by the limit like any other and the tear goes on through its weak points.
 constexpr double kMinTearSplitFraction = 0.7;
 inline float minTearSplitRest(const Cloth& c) { return c.minSplitRest * float(kMinTearSplitFraction / kMinSplitFraction); }
 

@@ -220,7 +220,8 @@ TEST(AppWindow, ReplayIsBitIdenticalRunToRun) {
 // script its pictures are made with: down and sideways, held) at 40
 // and 80 a side tears the curtain, and every piece it leaves is at least four rest triangles of its
 // mesh. At 40 a tear front halving the same corner again had set loose a 1.6 cm^2 sliver (1/8 of a
-// rest triangle; minTearSplitRest, cloth.h); at 80 the drag rips out a piece of about 0.75 m^2.
+// rest triangle; minTearSplitRest, cloth.h); at 40 and 80 the rip leaves the lower right part hanging
+// by a strip.
 TEST(AppWindow, ADragRipsWithoutScraps) {
     REQUIRE_XVFB();
     for (int n : {40, 80}) {

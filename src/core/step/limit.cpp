@@ -245,8 +245,15 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
             for (int c = 0; c < 3; ++c) packed[p].x[c] = x_[p][c], packed[p].v[c] = v_[p][c];
         }
     }
+    // A particle two sets moved is listed once: expand looks at each moved particle's springs.
     const uint32_t stamp = stamp0_ + uint32_t(iterations_) + 1;
-    for (Index p : moved) movedIn_[p] = stamp;
+    size_t keep = 0;
+    for (Index p : moved)
+        if (movedIn_[p] != stamp) {
+            movedIn_[p] = stamp;
+            moved[keep++] = p;
+        }
+    moved.resize(keep);
     parallelBarrier(nt); // stamps complete (expand reads the other end's)
     expand(moved, stamp, T_.active[t]);
 }
