@@ -9,11 +9,13 @@
 //   [ONEPOINT]    a bow tie comes apart at its one shared particle
 #include "clothtear/cloth.h"
 #include "clothtear/mesh.h"
+#include "clothtear/pieces.h"
 #include "clothtear/tear.h"
 #include "clothtear/world.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -244,3 +246,86 @@ TEST(OnePoint, BowTieSeparatesAtItsSharedParticle) {
 }
 
 } // namespace
+
+// No confetti (issue 13, goal 2): on a mesh large enough to have confetti, a one-point split never
+// sets loose a piece of less than a few rest triangles; the piece stays on as a flap. A 9 x 9 grid
+// of 0.1 m pinned along its top, with a fan of `flapTriangles` triangles hanging from its bottom
+// right corner by that corner alone, jerked away along the cloth. One triangle stays on (before the
+// rule, the split set it loose: a piece of one triangle); a fan of eight (2 x the scrap area) still
+// comes apart like any one-point connection.
+namespace {
+struct FlapRun {
+    size_t pieces = 0;
+    double smallestArea = 0;
+    uint64_t onePoint = 0;
+    std::string invalid;
+};
+FlapRun jerkFlap(int flapTriangles) {
+    std::vector<Vec3d> pos;
+    std::vector<std::array<Index, 3>> tris;
+    const int n = 9;
+    const double h = 0.1;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) pos.push_back({i * h, j * h, 0});
+    auto at = [&](int i, int j) { return Index(j * n + i); };
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            tris.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            tris.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    // The flap: a strip of cells right and below the corner (0.8, 0), joined to the grid only there.
+    const Index corner = at(n - 1, 0); // in the mesh (buildCloth may renumber)
+    // The strip's upper row is the corner, then (0.8 + k h, 0); its lower row (0.8 + k h, -h).
+    const int cells = (flapTriangles + 1) / 2;
+    std::vector<Index> upper{corner}, lower;
+    for (int k = 1; k <= cells; ++k) upper.push_back(Index(pos.size())), pos.push_back({0.8 + k * h, 0.0, 0});
+    for (int k = 0; k <= cells; ++k) lower.push_back(Index(pos.size())), pos.push_back({0.8 + k * h, -h, 0});
+    int added = 0;
+    for (int k = 0; k < cells && added < flapTriangles; ++k) {
+        tris.push_back({lower[k], upper[k + 1], upper[k]}); // the first holds the corner
+        if (++added < flapTriangles) tris.push_back({lower[k], lower[k + 1], upper[k + 1]}), ++added;
+    }
+    World w;
+    w.settings.tear.enabled = true;
+    w.settings.collision.ground = false;
+    w.settings.sleep.enabled = false;
+    EXPECT_EQ(w.rebuild(meshOf(pos, tris)), "");
+    FlapRun run;
+    // buildCloth may renumber and centre the mesh: the corner is its one one-point connection.
+    int hinges = 0;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) hinges += (w.cloth.flags[p] & kHinge) != 0;
+    if (hinges != 1) {
+        run.invalid = "expected one one-point connection, found " + std::to_string(hinges);
+        return run;
+    }
+    // Jerk the flap (the particles of the lowest row, below the grid) away along the cloth, hard
+    // enough to stretch its spokes past the one-point threshold.
+    double lowest = 1e30;
+    for (const Vec3d& r : w.cloth.rest) lowest = std::min(lowest, r.y());
+    for (Index p = 0; p < w.cloth.particleCount(); ++p)
+        if (w.cloth.rest[p].y() < lowest + 0.5 * h) w.cloth.v[p] = Vec3(30.f, -10.f, 0.f);
+    w.wake();
+    const double area0 = w.cloth.totalRestArea();
+    for (int f = 0; f < 30; ++f) w.step();
+    const std::vector<Piece> pieces = findPieces(w.cloth);
+    run.pieces = pieces.size();
+    run.smallestArea = 1e30;
+    for (const Piece& p : pieces) run.smallestArea = std::min(run.smallestArea, p.restArea);
+    run.onePoint = w.tearLog.counts[int(TearMode::OnePoint)];
+    run.invalid = validateCloth(w.cloth);
+    EXPECT_NEAR(w.cloth.totalRestArea(), area0, 1e-9);
+    return run;
+}
+} // namespace
+
+TEST(OnePoint, ASplitNeverSetsAScrapLooseItStaysOnAsAFlap) {
+    const double cellTriangle = 0.5 * 0.1 * 0.1;
+    const FlapRun one = jerkFlap(1);
+    ASSERT_EQ(one.invalid, "");
+    EXPECT_EQ(one.pieces, 1u) << "a one-triangle flap came loose (" << one.smallestArea / cellTriangle << " triangles)";
+    const FlapRun eight = jerkFlap(8);
+    ASSERT_EQ(eight.invalid, "");
+    EXPECT_GE(eight.onePoint, 1u) << "a fan of 8 triangles is no scrap: its one-point connection must still split";
+    EXPECT_EQ(eight.pieces, 2u);
+    EXPECT_GE(eight.smallestArea, 4 * cellTriangle - 1e-12);
+}

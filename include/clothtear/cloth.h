@@ -119,6 +119,19 @@ constexpr double kMinSplitFraction = 0.125;
 // by the limit like any other and the tear goes on through its weak points.
 constexpr double kMinTearSplitFraction = 0.7;
 inline float minTearSplitRest(const Cloth& c) { return c.minSplitRest * float(kMinTearSplitFraction / kMinSplitFraction); }
+// No confetti (issue 13): a one-point split never sets loose a piece of less rest area than this
+// many squared mean rest lengths; the piece stays on as a flap. On a grid of spacing h a rest
+// triangle is h^2 / 2 and the mean rest length about 1.14 h, so 1.5 mean^2 is about 4 triangles:
+// "a few rest triangles of the mesh" at every resolution. A mesh of fewer than 16 x 4 triangles has
+// no confetti (four of its triangles are a sixteenth of it or more: Onal's bow tie of two triangles
+// must come apart).
+constexpr double kMinLooseAreaFraction = 1.5;
+constexpr size_t kMinLooseMeshTriangles = 64;
+inline double minLooseArea(const Cloth& c) {
+    if (c.triangles.size() < kMinLooseMeshTriangles) return 0.0;
+    const double meanRest = c.minSplitRest / kMinSplitFraction;
+    return kMinLooseAreaFraction * meanRest * meanRest;
+}
 
 // Builds the cloth from a mesh: particles at the rest positions, one spring per unique edge, one
 // bend-shear spring per interior edge. Refuses non-manifold edges (3+ triangles) and degenerate

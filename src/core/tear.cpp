@@ -172,16 +172,33 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
 
 // ============================================================================================= [ONEPOINT]
 //
-// p joins two or more fans (a tear reached the border, or two tears met): every fan but the first
-// gets its own copy of p, and the one holding the tense spring is moved slightly along the tension.
-bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx) {
+// p joins two or more fans (a tear reached the border, or two tears met): fans leave p, each with
+// its own copy of p, and the one holding the tense spring is moved slightly along the tension.
+// No confetti (issue 13): a fan that would come loose as a scrap (wouldBeScrap) stays on p with the
+// first fan that would not, and hangs there as a flap; if no fan can leave without leaving a scrap
+// behind, p is not split (a forced tear, like the thresholds, skips this). Every scrap the drag gestures left came from this split (a fan of one or
+// two triangles already cut from the rest on its other sides). The flap's own spokes are never tear
+// candidates (isFlapSpoke: the limit holds them); a tense spring of another fan at p, with no fan
+// free to leave, is halved by the basic tear as at any weak end.
+
+bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx, bool keepFlaps) {
     const Spring tense = c.springs[sT]; // for the event
     const std::vector<Fan> fans = fansAround(c, p);
     if (fans.size() < 2) return false;
+    std::vector<uint8_t> leaves(fans.size(), 1);
+    bool kept = false, anyLeaves = false;
+    for (size_t f = 0; f < fans.size(); ++f) {
+        const bool scrap = keepFlaps && wouldBeScrap(c, p, fans[f].tris.front());
+        if (scrap || !kept) leaves[f] = 0;
+        kept |= !scrap;
+        anyLeaves |= leaves[f] != 0;
+    }
+    if (!anyLeaves) return false;
     std::vector<Index> touched;
     addFanTriangles(c, p, touched);
     Index holder = p;
-    for (size_t f = 1; f < fans.size(); ++f) {
+    for (size_t f = 0; f < fans.size(); ++f) {
+        if (!leaves[f]) continue;
         const bool holds = std::find(fans[f].spokes.begin(), fans[f].spokes.end(), sT) != fans[f].spokes.end();
         const Index q = detachGroup(c, p, fans[f].tris, {}, touched);
         if (holds) holder = q;
@@ -206,7 +223,7 @@ bool tearOne(Cloth& c, Index s, const TearContext& ctx, bool force, float scanSt
     // A hem holds up to its own threshold, whatever else the spring touches (tearStrainFor).
     if (!force && ((c.flags[a] | c.flags[b]) & kHem) && strain < hemThreshold(T)) return false;
     for (Index p : {a, b})
-        if ((c.flags[p] & kHinge) && (force || strain >= T.onePointThreshold) && onePointSplit(c, p, s, strain, ctx))
+        if ((c.flags[p] & kHinge) && (force || strain >= T.onePointThreshold) && onePointSplit(c, p, s, strain, ctx, !force))
             return true;
     bool weakEnd = false;
     for (Index p : {a, b})

@@ -104,6 +104,38 @@ uint8_t fanFlags(const Cloth& cloth, Index p) {
 }
 
 
+bool wouldBeScrap(const Cloth& c, Index p, Index seed) {
+    // The island of the seed's triangle without p, breadth first in a fixed buffer (this runs in
+    // the limit's scan for every spring over its threshold at a hinge): more triangles than the
+    // buffer holds is never a scrap.
+    constexpr size_t kMaxWalk = 128;
+    const double area = minLooseArea(c);
+    Index seen[kMaxWalk];
+    size_t count = 0;
+    seen[count++] = seed;
+    double sum = c.triangles[seed].restArea;
+    for (size_t next = 0; next < count && sum < area; ++next)
+        for (Index q : c.triangles[seen[next]].p) {
+            if (q == p) continue;
+            for (Index u : c.particleTris[q]) {
+                if (std::find(seen, seen + count, u) != seen + count) continue;
+                if (count == kMaxWalk) return false;
+                seen[count++] = u;
+                sum += c.triangles[u].restArea;
+                if (sum >= area) return false;
+            }
+        }
+    return sum < area;
+}
+
+bool isFlapSpoke(const Cloth& c, Index s) {
+    const Index seed = c.springTopo[s].tri[0];
+    if (seed == kNone) return false;
+    for (Index p : {c.springs[s].a, c.springs[s].b})
+        if ((c.flags[p] & kHinge) && wouldBeScrap(c, p, seed)) return true;
+    return false;
+}
+
 bool isTearTip(const Cloth& cloth, const std::vector<Fan>& fans, Index p) {
     if (fans.size() != 1 || fans[0].closed || fans[0].spokes.size() < 3) return false;
     const Index q1 = otherEnd(cloth.springs[fans[0].spokes.front()], p);

@@ -29,6 +29,17 @@ bool isTearTip(const Cloth& cloth, const std::vector<Fan>& fans, Index p);
 // kHinge (two or more fans), kWeak (tip of a tear) or 0, from one walk around p.
 uint8_t fanFlags(const Cloth& cloth, Index p);
 
+// No confetti (issue 13): would the fan of p that holds triangle `seed`, set loose from p, be an
+// island of less rest area than minLooseArea (cloth.h)? Walks the triangles joined to the seed
+// through particles other than p (which reaches the whole fan) and stops as soon as it has seen that
+// much: a fan still joined to the cloth elsewhere is never a scrap, and the walk stays short.
+bool wouldBeScrap(const Cloth& cloth, Index p, Index seed);
+// Is spring s a spoke of a fan that a one-point split at its hinge end would keep on as a flap
+// (wouldBeScrap)? The limit holds such a spring instead of leaving it to the tear phase: the split
+// would not happen, and a flap left overstretched ran away (halved again and again by basic tears,
+// forward Euler went non-finite in the random safe-parameter test).
+bool isFlapSpoke(const Cloth& cloth, Index s);
+
 // The spring joining particles a and b, or kNone (O(valence)).
 Index findSpring(const Cloth& cloth, Index a, Index b);
 

@@ -34,6 +34,7 @@
 #include "parallel.h"
 #include "phases.h"
 #include "tethers.h"
+#include "tear_topology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,7 +116,16 @@ private:
     bool exempt(const Spring& s, float len2) const {
         if (len2 < sq(s.rest * minTearRatio_) || s.rest < minTearSplitRest_) return false;
         return len2 >= sq(s.rest * tearRatioOf(s)) &&
-               std::sqrt(len2) / s.rest - 1.f >= exemptStrain_;
+               std::sqrt(len2) / s.rest - 1.f >= exemptStrain_ && !heldAsFlap(s);
+    }
+    // A flap's spoke over its threshold (the scan's flapHeld lists: a few springs at most) is
+    // limited: no one-point split would set the flap loose.
+    bool heldAsFlap(const Spring& s) const {
+        if (!((flags_[s.a] | flags_[s.b]) & kHinge)) return false;
+        const Index i = Index(&s - springs_);
+        for (const std::vector<Index>& held : T_.flapHeld)
+            if (std::find(held.begin(), held.end(), i) != held.end()) return true;
+        return false;
     }
 
     void scan(int t, int nt);
@@ -187,8 +197,12 @@ void LimitSolve::scan(int t, int nt) {
     scanSprings(arrays, sc.begin, sc.end, scanRatio, state_.packed.data(), [&](size_t e, float len2) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
-        if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s)))
-            found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
+        if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
+            if (((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i)))
+                T_.flapHeld[t].push_back(Index(i));
+            else
+                found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
+        }
         if (ctx_.limiting && overLimit(s, len2)) {
             listed_[i] = 1;
             list.push_back(Index(i));
@@ -441,10 +455,12 @@ void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
     T.moved.resize(threads);
     T.touched.resize(threads);
     T.found.resize(threads);
+    T.flapHeld.resize(threads);
     for (int t = 0; t < threads; ++t) {
         T.active[t].clear();
         T.moved[t].clear();
         T.found[t].clear();
+        T.flapHeld[t].clear();
     }
 }
 
