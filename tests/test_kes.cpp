@@ -1,7 +1,8 @@
 // material.model = kes (include/clothtear/kes.h, docs/kes-material.md): the units, the tensile law,
 // the hysteretic bending rate model and its hinge, against values computed by hand from Tagawa's
 // printed coefficients; the hysteresis loop of a strip bent back and forth (the energy the law says
-// a cycle loses, at two resolutions; none for the linear model); the stability guard with the law's
+// a cycle loses, at two resolutions; none for the linear model; the reversal threshold that keeps
+// sub-step jitter from eating the loop); the stability guard with the law's
 // tangent; the hinges' memory through a save, a load and a rewind; tearing with the kes law.
 #include "clothtear/history.h"
 #include "clothtear/kes.h"
