@@ -1,7 +1,8 @@
 // material.model = kes (include/clothtear/kes.h, docs/kes-material.md): the units, the tensile law,
 // the hysteretic bending rate model and its hinge, against values computed by hand from Tagawa's
 // printed coefficients; the hysteresis loop of a strip bent back and forth (the energy the law says
-// a cycle loses, at two resolutions; none for the linear model); the stability guard with the law's
+// a cycle loses, at two resolutions; none for the linear model; the reversal threshold that keeps
+// sub-step jitter from eating the loop); the stability guard with the law's
 // tangent; the hinges' memory through a save, a load and a rewind; tearing with the kes law.
 #include "clothtear/history.h"
 #include "clothtear/kes.h"
@@ -75,6 +76,61 @@ TEST(Kes, RateModelBranchesAndLoopArea) {
     }
     // Large alpha Km: the loop is a parallelogram of height D1 less the rounding of its corners.
     EXPECT_NEAR(kesLoopEnergyPerArea(law, 250.0), law.D1 * (500.0 - 2 / law.alpha), 1e-12);
+}
+
+namespace {
+// The area of the M-K loop of one hinge over the second of two cycles K = Km sin(2 pi i / n) + the
+// jitter (-1)^i j (a sub-step's back-and-forth), trapezoid rule.
+double loopAreaWithJitter(const KesLaw& law, double Km, double jitter) {
+    BendMemory mem;
+    const int n = 20000;
+    double area = 0, lastK = 0, lastM = 0;
+    for (int i = 0; i <= 2 * n; ++i) {
+        const double K = Km * std::sin(2 * M_PI * i / n) + (i % 2 ? -jitter : jitter);
+        const double M = kesBendAdvance(law, mem, K);
+        if (i > n) area += 0.5 * (M + lastM) * (K - lastK);
+        lastK = K, lastM = M;
+    }
+    return area;
+}
+} // namespace
+
+// material.kes_bend_reversal: a back-and-forth smaller than the threshold retraces one curve and the
+// large loop keeps the area the law gives (Eq. 4). Without the threshold the same jitter starts a
+// branch at every sample: the hinge stays on the steep starts of its branches and the loop shrinks
+// (forward Euler's swing did not decay: docs/kes-material.md, "Reversals and jitter").
+TEST(Kes, JitterBelowTheReversalThresholdKeepsTheLargeLoop) {
+    const KesLaw law = kesLawSI(MaterialSettings{});
+    ASSERT_GT(law.reversal, 0.0) << "the default has a threshold";
+    // Back-steps of up to 0.2 x the threshold (0.06 1/m: most of semi-implicit Euler's sub-step
+    // jitter in swing-vacuum is this size, bench/README.md).
+    const double jitter = 0.1 * law.reversal;
+    for (double Km : {15.0, 50.0}) { // the swing's curvature at release, and a saturated loop
+        const double expected = kesLoopEnergyPerArea(law, Km);
+        // Within 3 %: each jitter moves the extreme on by a sample's step, so the tentative branches
+        // it retraces start from slightly different points (a sliver of loop per jitter: 2 % here,
+        // in proportion to the jitter's size).
+        EXPECT_NEAR(loopAreaWithJitter(law, Km, jitter), expected, 0.03 * expected) << "Km = " << Km;
+        KesLaw plain = law;
+        plain.reversal = 0;
+        EXPECT_NEAR(loopAreaWithJitter(plain, Km, 0.0), expected, 0.002 * expected) << "no jitter: the same loop";
+        const double lost = loopAreaWithJitter(plain, Km, jitter);
+        EXPECT_LT(lost, 0.5 * expected) << "Km = " << Km << ": every jitter a branch";
+    }
+    // Within the threshold the memory does not move; past it the reversal counts at the extreme, and
+    // M is continuous there (the tentative branch is the committed one).
+    BendMemory mem;
+    kesBendAdvance(law, mem, 10.0);
+    const BendMemory at10 = mem;
+    const double tentative = kesBendAdvance(law, mem, 10.0 - 0.9 * law.reversal);
+    EXPECT_EQ(mem.reversalK, at10.reversalK);
+    EXPECT_EQ(mem.direction, 1);
+    EXPECT_NEAR(kesBendAdvance(law, mem, 10.5), kesMomentOnBranch(law, at10, 10.5), 1e-12) << "the old branch goes on";
+    EXPECT_LT(tentative, kesMomentOnBranch(law, at10, 10.0 - 0.9 * law.reversal)) << "behind the extreme: the reversal's branch";
+    const double committed = kesBendAdvance(law, mem, 10.5 - 1.1 * law.reversal);
+    EXPECT_EQ(mem.direction, -1);
+    EXPECT_FLOAT_EQ(mem.reversalK, 10.5f);
+    EXPECT_NEAR(committed, kesMomentOnBranch(law, mem, 10.5 - 1.1 * law.reversal), 1e-12);
 }
 
 // The dihedral angle's gradient (Bridson et al. 2003) against finite differences; flat is 0.

@@ -29,6 +29,9 @@ struct BenchOptions {
     std::string holdsTables = "all"; // grid, loaded, sag (any of them, comma separated) or all
     std::vector<std::string> sets;  // KEY=VALUE applied to every run of the mode (a candidate solver)
     std::string tag;                // suffix of the CSV file name (holds_TAG.csv)
+    // vacuum mode (issue 16)
+    std::vector<std::string> runs;  // only the runs whose label contains one of these ({} = all)
+    bool reversals = false;         // also the table of the hinges' curvature reversals (jitter)
 };
 
 // Loads a scene with overrides; a bad name or override is a bug in clothbench itself, so it throws

@@ -90,7 +90,10 @@ int main(int argc, char** argv) {
     app.add_flag("--holds-129", o.holds129, "Holds mode: also 129 particles a side (slow)");
     app.add_flag("--holds-257", o.holds257, "Holds mode: also the 2 m cloth at 257 a side (slow)");
     app.add_option("--tables", o.holdsTables, "Holds mode: grid, loaded, sag (comma separated) or all");
-    app.add_option("--set", o.sets, "Holds mode: KEY=VALUE for every run (repeatable), e.g. limit.solver=xpbd");
+    app.add_option("--set", o.sets, "Holds and vacuum modes: KEY=VALUE for every run (repeatable), e.g. limit.solver=xpbd");
+    app.add_option("--runs", o.runs, "Vacuum mode: only the runs whose label contains one of these (comma separated), e.g. 'kes forward-euler guard'")
+        ->delimiter(',');
+    app.add_flag("--reversals", o.reversals, "Vacuum mode: also count the kes hinges' curvature reversals against a threshold (the jitter table)");
     app.add_option("--tag", o.tag, "Holds mode: CSV name suffix (holds_TAG.csv)");
     if (const int status = clothtear::parseCommandLine(app, argc, argv, "clothbench"); status >= 0) return status;
     for (int i = 0; i < argc; ++i)

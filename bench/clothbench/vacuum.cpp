@@ -12,9 +12,11 @@
 #include "common.h"
 #include "report.h"
 
+#include "clothtear/kes.h"
 #include "clothtear/scenes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -147,6 +149,97 @@ RotationFigures rotationFigures(const Curve& c) {
     return r;
 }
 
+// The jitter table (--reversals): how many reversals of its curvature a kes hinge makes per second,
+// counted with each threshold (a reversal counts once K is back from its extreme by more than the
+// threshold: the rule of kesBendAdvance), from K sampled at every sub-step. The swing alone reverses
+// each hinge about twice a period (~5 per second); what a threshold counts beyond that is jitter.
+constexpr double kReversalThresholds[] = {0, 0.003, 0.01, 0.03, 0.1, 0.3, 1, 3}; // 1/m
+constexpr size_t kThresholdCount = std::size(kReversalThresholds);
+
+struct ReversalCounter {
+    double extreme = 0;
+    int dir = 0;
+    long count = 0;
+    void add(double K, double threshold) {
+        if (dir == 0) {
+            if (K != extreme) dir = K > extreme ? 1 : -1, extreme = K;
+        } else if (dir * (K - extreme) > 0) {
+            extreme = K;
+        } else if (dir * (extreme - K) > threshold) {
+            ++count, dir = -dir, extreme = K;
+        }
+    }
+};
+
+struct ReversalRates {
+    double perSecond[kThresholdCount] = {};  // mean over the hinges, reversals per second
+    int substeps = 0;                        // sub-steps a frame of the scene as set
+    bool finite = true;
+};
+
+// One frame per sub-step (frame_dt set to the scene's sub-step, one sub-step a frame, the guard's
+// caps as at the scene's count), so every sub-step's curvature is seen.
+ReversalRates countReversals(const std::vector<std::string>& sets, double simSeconds) {
+    ReversalRates r;
+    World probe = loadOrThrow("swing-vacuum", sets);
+    probe.step();
+    r.substeps = probe.frameSubsteps;
+    World w = loadOrThrow("swing-vacuum", sets);
+    w.settings.time.frameDt = float(double(w.settings.time.frameDt) / r.substeps);
+    w.settings.time.substeps = 1;
+    w.settings.time.maxSubsteps = 1;
+    std::vector<std::array<ReversalCounter, kThresholdCount>> counters(w.cloth.bends.size());
+    const long steps = std::lround(simSeconds / double(w.settings.time.frameDt));
+    for (long i = 0; i < steps && w.finite; ++i) {
+        w.step();
+        for (Index b = 0; b < w.cloth.bends.size(); ++b) {
+            const HingeGeometry h = hingeOf(w.cloth, b);
+            double theta = 0;
+            Vec3d g[4];
+            if (!(h.length > 0) || !dihedralAngle(w.cloth.x[h.c], w.cloth.x[h.d], w.cloth.x[h.a], w.cloth.x[h.e], theta, g)) continue;
+            for (size_t k = 0; k < kThresholdCount; ++k) counters[b][k].add(theta / h.length, kReversalThresholds[k]);
+        }
+    }
+    r.finite = w.finite;
+    for (size_t k = 0; k < kThresholdCount; ++k) {
+        double sum = 0;
+        for (const auto& c : counters) sum += double(c[k].count);
+        r.perSecond[k] = sum / double(std::max<size_t>(1, counters.size())) / simSeconds;
+    }
+    return r;
+}
+
+void printReversals(const BenchOptions& o, double simSeconds) {
+    Csv csv(o.out + "/vacuum_reversals.csv", {"run", "threshold_per_m", "reversals_per_hinge_per_s"});
+    std::printf("\nkes hinges' curvature reversals per hinge per second (K sampled every sub-step, %.1f s of swing),"
+                "\ncounted with a threshold dK (1/m; 1/alpha = %.2f 1/m):\n%-40s %6s",
+                simSeconds, 1.0 / kesLawSI(MaterialSettings{}).alpha, "run", "subst.");
+    for (double t : kReversalThresholds) std::printf(" %7g", t);
+    std::printf("\n");
+    struct Row { const char* label; std::vector<std::string> sets; };
+    const std::vector<Row> rows = {
+        {"forward-euler 5mm", {"time.integrator=forward-euler"}},
+        {"semi-implicit-euler 5mm", {"time.integrator=semi-implicit-euler"}},
+        {"verlet 5mm", {"time.integrator=verlet"}},
+        {"forward-euler 2.5mm", {"time.integrator=forward-euler", "cloth.resolution_x=9", "cloth.resolution_y=41"}},
+        {"semi-implicit-euler 2.5mm", {"time.integrator=semi-implicit-euler", "cloth.resolution_x=9", "cloth.resolution_y=41"}},
+    };
+    for (const Row& row : rows) {
+        if (!o.runs.empty() && std::none_of(o.runs.begin(), o.runs.end(), [&](const std::string& r) { return std::string(row.label).find(r) != std::string::npos; }))
+            continue;
+        std::vector<std::string> sets = row.sets;
+        sets.insert(sets.end(), o.sets.begin(), o.sets.end());
+        const ReversalRates r = countReversals(sets, simSeconds);
+        std::printf("%-40s %6d", row.label, r.substeps);
+        for (size_t k = 0; k < kThresholdCount; ++k) {
+            std::printf(" %7.1f", r.perSecond[k]);
+            csv.row(row.label, kReversalThresholds[k], r.perSecond[k]);
+        }
+        std::printf("%s\n", r.finite ? "" : "  NOT FINITE");
+        std::fflush(stdout);
+    }
+}
+
 std::string fmt(double v, const char* f = "%.3f") {
     if (std::isnan(v)) return "-";
     char b[40];
@@ -188,6 +281,12 @@ int runVacuum(const BenchOptions& o) {
         configs.push_back({"kes impulse.spin=28", {"impulse.spin=28"}});
         configs.push_back({"kes impulse.spin=36", {"impulse.spin=36"}});
     }
+    // --runs: a subset by label; --set: applied to every run (after the run's own sets).
+    std::erase_if(configs, [&](const auto& c) {
+        return !o.runs.empty() && std::none_of(o.runs.begin(), o.runs.end(), [&](const std::string& r) { return c.first.find(r) != std::string::npos; });
+    });
+    for (auto& c : configs) c.second.insert(c.second.end(), o.sets.begin(), o.sets.end());
+    if (o.reversals) printReversals(o, swingSeconds);
     Csv swingCsv(o.out + "/vacuum_swing.csv", {"run", "t_s", "offset_m"});
     Csv rotCsv(o.out + "/vacuum_rotation.csv", {"run", "t_s", "angle_rad"});
     Csv summary(o.out + "/vacuum_summary.csv",

@@ -49,11 +49,13 @@ struct Triangle {
 };
 
 // material.model = kes (clothtear/kes.h): the memory of one hinge (one per bend-shear spring,
-// Cloth::bendMemory): the branch it is on and
-// the reversal point the branch started from. A new hinge starts at the origin on the loading branch
-// of the virgin curve M = D K + sign(K) D1 (1 - exp(-alpha |K|)).
+// Cloth::bendMemory): the branch it is on, the reversal point the branch started from and how far
+// along it the hinge has gone. A new hinge starts at the origin on the loading branch of the virgin
+// curve M = D K + sign(K) D1 (1 - exp(-alpha |K|)).
 struct BendMemory {
-    float curvature = 0;    // 1/m   at the last evaluation (dK/dt's sign comes from it)
+    float extremeK = 0;     // 1/m   the curvature furthest along the branch's direction so far: a
+                            //       reversal counts once K is back from it by material.kes_bend_reversal
+                            //       (with 0, the curvature at the last evaluation)
     float reversalK = 0;    // 1/m   where the current branch started
     float reversalM = 0;    // N     the moment per width there
     int32_t direction = 0;  // +1 loading (dK/dt > 0), -1 unloading, 0 not moved yet

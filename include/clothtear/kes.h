@@ -29,6 +29,7 @@ struct KesLaw {
     double D = 0;     // N m      bending rigidity per unit width (moment per width per curvature)
     double D1 = 0;    // N        hysteresis moment per unit width
     double alpha = 0; // m        saturation length of the hysteresis after a reversal
+    double reversal = 0; // 1/m   how far back from its extreme K must come for a reversal to count
 };
 
 // The settings' coefficients in SI: gf/cm -> N/m is x 0.980665; e in % -> strain is e = 100 s, so the
@@ -61,8 +62,19 @@ double kesStrainRange(const Settings& settings);
 // The rate model (Tagawa Eq. 3a/3b): on the branch started at (K_r, M_r) in direction s,
 //   M(K) = M_r + D (K - K_r) + s D1 (1 - exp(-alpha |K - K_r|)).
 double kesMomentOnBranch(const KesLaw& law, const BendMemory& mem, double curvature);
-// Moves the memory to curvature K: when dK changes sign, the branch reverses at the last curvature
-// (continuous in M). Returns M(K), N (moment per unit width).
+// Moves the memory to curvature K and returns M(K), N (moment per unit width). Past the branch's
+// extreme K_x (in its direction) the branch goes on and K_x follows; behind it, M is the branch a
+// reversal at K_x would start (continuous at K_x), but the memory commits to it (K_r, M_r = K_x,
+// M(K_x), the direction flips) only once K is back by more than law.reversal. Until then a return
+// past K_x continues the old branch: a small back-and-forth retraces one curve and loses nothing,
+// and the large loop forms as if it had not happened. With law.reversal = 0 every reversal counts
+// at once (the plain rate model). Large cycles follow exactly the same M(K) either way.
+//
+//   M |          . old branch, on past K_x
+//     |       .*  K_x: the extreme
+//     |     .  /
+//     |   .   /   the reversal's branch: tentative within `reversal` of K_x, committed beyond
+//     +----------------- K
 double kesBendAdvance(const KesLaw& law, BendMemory& mem, double curvature);
 // Largest slope dM/dK of the law (right after a reversal): D + alpha D1, N m.
 double kesMaxBendSlope(const KesLaw& law);

@@ -60,6 +60,11 @@ struct MaterialSettings {
     float kesBendD = 0.12266f;  // gf cm^2/cm  bending rigidity B
     float kesBendD1 = 0.1181f;  // gf cm/cm    hysteresis, the loop's width at K = 0 (2HB)
     float kesBendAlpha = 24.94f; // cm         how fast the hysteresis saturates after a reversal
+    // kes: how far (1/m, SI: a numerical choice of this project, not a KES coefficient) the curvature
+    // must come back from its extreme before the rate model starts a new branch there; smaller
+    // reversals (a sub-step's jitter) retrace the tentative branch and leave the memory as it was
+    // (docs/kes-material.md, "Reversals and jitter").
+    float kesBendReversal = 0.3f; // 1/m
 };
 
 struct AirSettings {

@@ -26,6 +26,7 @@ KesLaw kesLawSI(const MaterialSettings& m) {
     law.D = double(m.kesBendD) * kGramForce * kCentimetre;  // gf cm^2/cm = gf cm
     law.D1 = double(m.kesBendD1) * kGramForce;              // gf cm/cm = gf
     law.alpha = double(m.kesBendAlpha) * kCentimetre;       // cm
+    law.reversal = double(m.kesBendReversal);               // already 1/m (not a KES coefficient)
     return law;
 }
 
@@ -65,21 +66,27 @@ double kesMomentOnBranch(const KesLaw& law, const BendMemory& mem, double K) {
 }
 
 double kesBendAdvance(const KesLaw& law, BendMemory& mem, double K) {
-    const double last = double(mem.curvature);
-    const double dK = K - last;
-    if (dK != 0.0) {
-        const int32_t dir = dK > 0 ? 1 : -1;
-        if (mem.direction == 0) {
-            mem.direction = dir; // first move: the virgin curve from (reversalK, reversalM)
-        } else if (dir != mem.direction) {
-            // A reversal at the last curvature: the new branch starts where the old one ended.
-            mem.reversalM = float(kesMomentOnBranch(law, mem, last));
-            mem.reversalK = float(last);
-            mem.direction = dir;
-        }
-        mem.curvature = float(K);
+    const double extreme = double(mem.extremeK);
+    if (K == extreme) return kesMomentOnBranch(law, mem, K);
+    if (mem.direction == 0) {
+        // First move: the virgin curve from (reversalK, reversalM), in the direction K went.
+        mem.direction = K > extreme ? 1 : -1;
+        mem.extremeK = float(K);
+        return kesMomentOnBranch(law, mem, K);
     }
-    return kesMomentOnBranch(law, mem, K);
+    const double s = double(mem.direction);
+    if (s * (K - extreme) > 0) { // on along the branch
+        mem.extremeK = float(K);
+        return kesMomentOnBranch(law, mem, K);
+    }
+    // Behind the extreme: the branch a reversal there starts (continuous in M at the extreme).
+    BendMemory reversed = mem;
+    reversed.reversalM = float(kesMomentOnBranch(law, mem, extreme));
+    reversed.reversalK = float(extreme);
+    reversed.direction = -mem.direction;
+    reversed.extremeK = float(K);
+    if (s * (extreme - K) > law.reversal) mem = reversed; // back far enough: the reversal counts
+    return kesMomentOnBranch(law, reversed, K);
 }
 
 double kesMaxBendSlope(const KesLaw& law) { return law.D + law.alpha * law.D1; }

@@ -50,6 +50,7 @@ const ParamInfo kParams[] = {
     CT_F("material.kes_bend_d", material.kesBendD, 0, 2, 0, 1000, "gf cm^2/cm", "kes: bending rigidity D (Tagawa Fig. 8(b): 0.12266)", false),
     CT_F("material.kes_bend_d1", material.kesBendD1, 0, 2, 0, 1000, "gf cm/cm", "kes: bending hysteresis D1, the loop's width at K = 0 (Tagawa Fig. 8(b): 0.1181)", false),
     CT_F("material.kes_bend_alpha", material.kesBendAlpha, 0.1, 200, 1e-3, 1e5, "cm", "kes: how fast the hysteresis saturates after a reversal, exp(-alpha abs(K - K_r)) (Tagawa Fig. 8(b): 24.94)", false),
+    CT_F("material.kes_bend_reversal", material.kesBendReversal, 0, 2, 0, 1e4, "1/m", "kes: a reversal of the curvature starts a new hysteresis branch only once the curvature is back by this much from its extreme (smaller ones, a sub-step's jitter, leave the branch as it was; in 1/m, not cm^-1; docs/kes-material.md)", false),
 
     CT_E("air.model", air.model, kAirNames, "Air friction: physical drag, or Keserica's fixed fraction per step", false),
     CT_F("air.drag", air.dragCoefficient, 0, 5, 0, 1000, "kg/(m^2 s)", "Linear air drag per unit area: F = -c A v", false),

@@ -64,7 +64,7 @@ uint64_t stateHash(const World& w) {
     if (!c.bendMemory.empty()) {
         h.scalar(uint64_t(c.bendMemory.size()));
         for (const BendMemory& m : c.bendMemory)
-            h.scalar(m.curvature), h.scalar(m.reversalK), h.scalar(m.reversalM), h.scalar(m.direction);
+            h.scalar(m.extremeK), h.scalar(m.reversalK), h.scalar(m.reversalM), h.scalar(m.direction);
     }
     h.scalar(uint64_t(c.triangles.size()));
     for (const Triangle& t : c.triangles) {

@@ -238,8 +238,8 @@ void readBends(ByteReader& r, Cloth& c, uint32_t version) {
     for (size_t b = 0; b < nm; ++b) {
         const std::string at = "bend memory " + std::to_string(b) + ": ";
         BendMemory& m = c.bendMemory[b];
-        m.curvature = r.f32();
-        requireNumber(r, m.curvature, -1e30, 1e30, at + "curvature");
+        m.extremeK = r.f32();
+        requireNumber(r, m.extremeK, -1e30, 1e30, at + "extreme curvature");
         m.reversalK = r.f32();
         requireNumber(r, m.reversalK, -1e30, 1e30, at + "reversal curvature");
         m.reversalM = r.f32();

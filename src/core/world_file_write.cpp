@@ -107,7 +107,7 @@ void writeCloth(ByteWriter& w, const Cloth& c) {
     // Version 3: the kes hinges' memory, none or one per bend.
     w.u64(c.bendMemory.size());
     for (const BendMemory& m : c.bendMemory)
-        w.f32(m.curvature), w.f32(m.reversalK), w.f32(m.reversalM), w.u32(uint32_t(m.direction));
+        w.f32(m.extremeK), w.f32(m.reversalK), w.f32(m.reversalM), w.u32(uint32_t(m.direction));
     w.endSection();
 
     w.beginSection(kSecTriangles);
