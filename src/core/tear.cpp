@@ -176,11 +176,11 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
 // its own copy of p, and the one holding the tense spring is moved slightly along the tension.
 // No confetti (issue 13): a fan that would come loose as a scrap (wouldBeScrap) stays on p with the
 // first fan that would not, and hangs there as a flap; if no fan can leave without leaving a scrap
-// behind, p is not split (a forced tear, like the thresholds, skips this). Every scrap the drag gestures left came from this split (a fan of one or
-// two triangles already cut from the rest on its other sides). The flap's own spokes are never tear
-// candidates (isFlapSpoke: the limit holds them); a tense spring of another fan at p, with no fan
-// free to leave, is halved by the basic tear as at any weak end.
-
+// behind, p is not split (a forced tear, like the thresholds, skips this). Every scrap the drag
+// gestures left came from this split (a fan of one or two triangles already cut from the rest on
+// its other sides). The flap's own spokes are never tear candidates (isFlapSpoke: the limit holds
+// them); a tense spring of another fan at p, with no fan free to leave, is halved by the basic tear
+// as at any weak end.
 bool onePointSplit(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx, bool keepFlaps) {
     const Spring tense = c.springs[sT]; // for the event
     const std::vector<Fan> fans = fansAround(c, p);
