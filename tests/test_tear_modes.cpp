@@ -249,7 +249,7 @@ TEST(OnePoint, BowTieSeparatesAtItsSharedParticle) {
 
 // No confetti (issue 13, goal 2): on a mesh large enough to have confetti, a one-point split never
 // sets loose a piece of less than a few rest triangles; the piece stays on as a flap. A 9 x 9 grid
-// of 0.1 m pinned along its top, with a fan of `flapTriangles` triangles hanging from its bottom
+// (makeGridMesh) of 0.1 m pinned along its top, with a fan of `flapTriangles` triangles hanging from its bottom
 // right corner by that corner alone, jerked away along the cloth. One triangle stays on (before the
 // rule, the split set it loose: a piece of one triangle); a fan of eight (2 x the scrap area) still
 // comes apart like any one-point connection.
@@ -261,37 +261,36 @@ struct FlapRun {
     std::string invalid;
 };
 FlapRun jerkFlap(int flapTriangles) {
-    std::vector<Vec3d> pos;
-    std::vector<std::array<Index, 3>> tris;
-    const int n = 9;
     const double h = 0.1;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) pos.push_back({i * h, j * h, 0});
-    auto at = [&](int i, int j) { return Index(j * n + i); };
-    for (int j = 0; j + 1 < n; ++j)
-        for (int i = 0; i + 1 < n; ++i) {
-            tris.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            tris.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    // The flap: a strip of cells right and below the corner (0.8, 0), joined to the grid only there.
-    const Index corner = at(n - 1, 0); // in the mesh (buildCloth may renumber)
-    // The strip's upper row is the corner, then (0.8 + k h, 0); its lower row (0.8 + k h, -h).
+    MeshData mesh = makeGridMesh(9, 9, 0.8, 0.8); // x and y in [-0.4, 0.4]
+    const Vec3d cornerAt(0.4, -0.4, 0.0);
+    Index corner = kNone;
+    for (Index v = 0; v < mesh.positions.size(); ++v)
+        if ((mesh.positions[v] - cornerAt).norm() < 1e-9) corner = v;
+    EXPECT_NE(corner, kNone);
+    // The flap: a strip of cells right of and below the bottom right corner, joined to the grid only
+    // there. Its upper row is the corner, then (0.4 + k h, -0.4); its lower row (0.4 + k h, -0.5).
+    std::vector<Vec3d>& pos = mesh.positions;
     const int cells = (flapTriangles + 1) / 2;
     std::vector<Index> upper{corner}, lower;
-    for (int k = 1; k <= cells; ++k) upper.push_back(Index(pos.size())), pos.push_back({0.8 + k * h, 0.0, 0});
-    for (int k = 0; k <= cells; ++k) lower.push_back(Index(pos.size())), pos.push_back({0.8 + k * h, -h, 0});
+    for (int k = 1; k <= cells; ++k) upper.push_back(Index(pos.size())), pos.push_back(cornerAt + Vec3d(k * h, 0, 0));
+    for (int k = 0; k <= cells; ++k) lower.push_back(Index(pos.size())), pos.push_back(cornerAt + Vec3d(k * h, -h, 0));
+    auto addTriangle = [&](Index a, Index b, Index c) { // counter-clockwise, UVs from the positions
+        mesh.triangles.push_back({a, b, c});
+        mesh.cornerUVs.push_back({pos[a].head<2>(), pos[b].head<2>(), pos[c].head<2>()});
+    };
     int added = 0;
     for (int k = 0; k < cells && added < flapTriangles; ++k) {
-        tris.push_back({lower[k], upper[k + 1], upper[k]}); // the first holds the corner
-        if (++added < flapTriangles) tris.push_back({lower[k], lower[k + 1], upper[k + 1]}), ++added;
+        addTriangle(lower[k], upper[k + 1], upper[k]); // the first holds the corner
+        if (++added < flapTriangles) addTriangle(lower[k], lower[k + 1], upper[k + 1]), ++added;
     }
     World w;
     w.settings.tear.enabled = true;
     w.settings.collision.ground = false;
     w.settings.sleep.enabled = false;
-    EXPECT_EQ(w.rebuild(meshOf(pos, tris)), "");
+    EXPECT_EQ(w.rebuild(mesh), "");
     FlapRun run;
-    // buildCloth may renumber and centre the mesh: the corner is its one one-point connection.
+    // buildCloth numbers the particles anew: find the corner as the mesh's one one-point connection.
     int hinges = 0;
     for (Index p = 0; p < w.cloth.particleCount(); ++p) hinges += (w.cloth.flags[p] & kHinge) != 0;
     if (hinges != 1) {
