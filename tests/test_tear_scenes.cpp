@@ -104,8 +104,8 @@ TEST(TearScenes, PullTearsNextToTheGrabAcrossThePull) {
 
 // Issue 13, the hand has a size: the pull holds a 0.3 m patch (grab.radius), not one particle, so
 // the rip does not depend on the resolution. Holding one particle, it tore out alone (3 tears at 40
-// and at 80 a side). At 40 and 80 a side, pulled straight down: the rip starts at the same time
-// (within 10 %), runs across the pull (its principal axis within 20 deg of horizontal) and has
+// and at 80 a side). At 40 and 80 a side, pulled straight down or at a slant (below): the rip starts
+// at the same time (within 10 %), runs horizontally (its principal axis within 20 deg) and has
 // about the same length in metres (within 25 %), and leaves the same pieces: the sheet and what the
 // hand tore out, no scraps (the smallest piece is over 0.1 m^2, some ten rest triangles at 40).
 namespace {
@@ -142,20 +142,32 @@ Rip ripOf(const nlohmann::json& r) {
 }
 } // namespace
 
+// Pulled straight down and at 30 and 60 deg towards the side, the rip is the same at 40 and 80 a
+// side and runs horizontally. Horizontal is across the tension the hand puts into the sheet, not
+// across the hand's velocity: the hand is driven at a set velocity, and the force it needs points
+// to where the sheet holds it back, the pinned top edge. The principal stretch of the sheet round
+// the hand at the first tear points 68-87 deg from horizontal at 30 and 60 deg (rest-frame
+// deformation gradients of the triangles within 0.45-1 m of the hand, at 40 and 80), so the rip
+// across it is within about 20 deg of horizontal. Pulled sideways (90 deg) the stretch leans to
+// 51-57 deg, towards the far end of the pinned edge, and the rip is not yet the same at 40 and 80
+// (bench/gestures/pull_rips.sh; issue 13 goal 1, open).
 TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
-    Rip rips[2];
-    const int res[2] = {40, 80};
-    for (int k = 0; k < 2; ++k) {
-        const std::string r = std::to_string(res[k]);
-        rips[k] = ripOf(runScene("pull", 4.0, "--set pull.angle=0 --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r));
-        ASSERT_GE(rips[k].tears, 5u) << res[k];
-        EXPECT_LT(std::min(rips[k].axisDeg, 180.0 - rips[k].axisDeg), 20.0) << res[k];
-        EXPECT_GT(rips[k].length, 1.0) << res[k]; // a rip, not the hand torn out (0.6 m across)
-        EXPECT_GT(rips[k].smallestPiece, 0.1) << res[k];
+    for (int angle : {0, 30, 60}) {
+        Rip rips[2];
+        const int res[2] = {40, 80};
+        for (int k = 0; k < 2; ++k) {
+            const std::string r = std::to_string(res[k]);
+            rips[k] = ripOf(runScene("pull", 4.0, "--set pull.angle=" + std::to_string(angle) + " --set cloth.resolution_x=" + r +
+                                                      " --set cloth.resolution_y=" + r));
+            ASSERT_GE(rips[k].tears, 5u) << angle << " deg at " << res[k];
+            EXPECT_LT(std::min(rips[k].axisDeg, 180.0 - rips[k].axisDeg), 20.0) << angle << " deg at " << res[k];
+            EXPECT_GT(rips[k].length, 1.0) << angle << " deg at " << res[k]; // a rip, not the hand torn out (0.6 m across)
+            EXPECT_GT(rips[k].smallestPiece, 0.1) << angle << " deg at " << res[k];
+        }
+        EXPECT_EQ(rips[1].pieces, rips[0].pieces) << angle << " deg";
+        EXPECT_NEAR(rips[1].firstTime, rips[0].firstTime, 0.1 * rips[0].firstTime) << angle << " deg";
+        EXPECT_NEAR(rips[1].length, rips[0].length, 0.25 * std::max(rips[0].length, rips[1].length)) << angle << " deg";
     }
-    EXPECT_EQ(rips[1].pieces, rips[0].pieces);
-    EXPECT_NEAR(rips[1].firstTime, rips[0].firstTime, 0.1 * rips[0].firstTime);
-    EXPECT_NEAR(rips[1].length, rips[0].length, 0.25 * std::max(rips[0].length, rips[1].length));
 }
 
 // Issue 13 goal 2, no confetti: pulled at a slant or sideways, the hand tears the sheet and may tear
