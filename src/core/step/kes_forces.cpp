@@ -43,7 +43,7 @@ void tensionForces(const KesLaw& law, double range, double beta, const SpringCac
     }
 }
 
-void hinges(const StepContext& ctx, Cloth& cloth, std::vector<Vec3d>& force) {
+void hinges(const StepContext& ctx, Cloth& cloth, std::vector<Vec3d>& force, std::vector<HingeTangent>* implicit = nullptr) {
     if (cloth.bendMemory.size() != cloth.bends.size()) {
         // First kes step of this cloth (or after a switch from linear): every hinge starts at rest.
         // Afterwards the topology changes keep the memory parallel to the bends (cloth.cpp).
@@ -52,9 +52,10 @@ void hinges(const StepContext& ctx, Cloth& cloth, std::vector<Vec3d>& force) {
     force.assign(cloth.particleCount(), Vec3d::Zero());
     const Settings& s = *ctx.settings;
     HingeStep step;
-    step.capDt = s.time.stabilityGuard ? double(ctx.dt) : 0.0;
+    step.capDt = s.time.stabilityGuard && !implicit ? double(ctx.dt) : 0.0; // implicit Euler: stable uncapped
     step.capWeight = kesGuardWeight(s);
     step.rayleigh = kesRayleighTime(s, ctx.dt);
+    step.tangents = implicit;
     materialBendForces(cloth, s.material, cloth.bendMemory, force, nullptr, step);
 }
 
@@ -74,12 +75,14 @@ void phaseSpringsKes(const StepContext& ctx, Cloth& cloth, StepState& state) {
     for (size_t p = 0; p < n; ++p) acc[p].head<3>() += hingeForce[p].cast<float>();
 }
 
-void kesForces(const StepContext& ctx, Cloth& cloth, StepState& state, std::vector<Vec3>& force) {
+void kesForces(const StepContext& ctx, Cloth& cloth, StepState& state, std::vector<Vec3>& force,
+               std::vector<HingeTangent>* implicit) {
     if (force.size() != cloth.particleCount()) force.assign(cloth.particleCount(), Vec3::Zero());
     const KesLaw law = kesLawSI(ctx.settings->material);
-    tensionForces(law, kesStrainRange(*ctx.settings), 0.0, state.springs, cloth, [&](Index p, const Vec3& f) { force[p] += f; });
+    if (!implicit)
+        tensionForces(law, kesStrainRange(*ctx.settings), 0.0, state.springs, cloth, [&](Index p, const Vec3& f) { force[p] += f; });
     std::vector<Vec3d>& hingeForce = state.kesHingeForce;
-    hinges(ctx, cloth, hingeForce);
+    hinges(ctx, cloth, hingeForce, implicit);
     for (size_t p = 0; p < force.size(); ++p) force[p] += hingeForce[p].cast<float>();
 }
 
