@@ -52,15 +52,16 @@ double kesTangentInRange(const KesLaw& law, double e, double range) {
     return kesTangent(law, std::min(std::abs(e), range));
 }
 
-double kesRayleighTime(const Settings& s, double dt) {
-    const bool on = s.material.model == MaterialModel::Kes && s.time.integrator == Integrator::ForwardEuler;
-    return on ? kKesForwardEulerDamping * dt : 0.0;
+namespace {
+// Forward Euler with the law: the step adds Rayleigh damping (kes.h).
+bool kesForwardEuler(const Settings& s) {
+    return s.material.model == MaterialModel::Kes && s.time.integrator == Integrator::ForwardEuler;
 }
+} // namespace
 
-double kesGuardWeight(const Settings& s) {
-    const bool on = s.material.model == MaterialModel::Kes && s.time.integrator == Integrator::ForwardEuler;
-    return on ? 1.0 + 2.0 * kKesForwardEulerDamping : 1.0;
-}
+double kesRayleighTime(const Settings& s, double dt) { return kesForwardEuler(s) ? kKesForwardEulerDamping * dt : 0.0; }
+
+double kesGuardWeight(const Settings& s) { return kesForwardEuler(s) ? 1.0 + 2.0 * kKesForwardEulerDamping : 1.0; }
 
 double kesMaxTangent(const KesLaw& law, double strainMax) {
     return kesTangent(law, std::max(0.0, strainMax));
