@@ -143,9 +143,14 @@ double kesHingeStiffness(const KesLaw& law, const HingeGeometry& hinge);
 bool dihedralAngle(const Vec3& c, const Vec3& d, const Vec3& a, const Vec3& e, double& theta, Vec3d grad[4]);
 
 // One hinge linearized for implicit Euler: its corners (c, d, a, e), the gradient of its angle and
-// dtau/dtheta = (dM/dK) w / L (N m per radian; dM/dK of the branch it is on, kesBendAdvance). Its
-// forces' Jacobian, without the term tau d^2 theta / dx^2 (Gauss-Newton: positive semi-definite),
-// is -dtau/dtheta grad_i grad_j^T.
+// the stiffness dtau/dtheta = S w / L (N m per radian) its forces' Jacobian takes, without the term
+// tau d^2 theta / dx^2 (Gauss-Newton: positive semi-definite): -dtau/dtheta grad_i grad_j^T.
+// S is the law's largest slope D + alpha D1 (kesMaxBendSlope), not the slope of the branch the hinge
+// is on: a reversal within the step makes the slope jump to it (x 25 from D with Tagawa's values).
+// With the branch's slope, the vacuum swing at 10 implicit sub-steps a frame zig-zagged (374
+// reversals per hinge per second beyond 0.3 1/m, the swing alone makes 5): no hysteresis, the
+// period of D1 = 0 (0.502 s for 0.414); with the largest, 3 a second and 0.418 s
+// (docs/kes-material.md, "Implicit Euler").
 struct HingeTangent {
     Index p[4];
     Vec3d grad[4];   // 1/m

@@ -210,7 +210,10 @@ void materialBendForces(const Cloth& cloth, const MaterialSettings& m, std::vect
             tau += step.rayleigh * dTau * thetaRate;
         }
         for (int i = 0; i < 4; ++i) force[p[i]] -= tau * g[i];
-        if (step.tangents) step.tangents->push_back(HingeTangent{{p[0], p[1], p[2], p[3]}, {g[0], g[1], g[2], g[3]}, dTau});
+        // Implicit Euler's linearization: the largest slope, not the branch's (HingeTangent, kes.h).
+        if (step.tangents)
+            step.tangents->push_back(HingeTangent{{p[0], p[1], p[2], p[3]}, {g[0], g[1], g[2], g[3]},
+                                                  kesMaxBendSlope(law) * h.width / h.length});
     }
 }
 

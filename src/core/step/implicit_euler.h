@@ -23,8 +23,10 @@
 // (the linear spring's matrix is this with T = k (l - L) / weight / L). A hinge (c, d across
 // edge a-e) with angle theta and torque tau = M(K) w gives f_i = -tau dtheta/dx_i, and, without the
 // term tau d^2 theta / dx_i dx_j (Gauss-Newton, so the matrix stays positive definite),
-//   df_i/dx_j = -(dM/dK) w / L  dtheta/dx_i dtheta/dx_j^T
-// with dM/dK the slope of the hysteresis branch the hinge is on (kesBendAdvance). The hinges'
+//   df_i/dx_j = -S w / L  dtheta/dx_i dtheta/dx_j^T
+// with S the law's largest slope dM/dK, D + alpha D1, which a reversal within the step jumps to
+// (HingeTangent in kes.h: with the slope of the branch the hinge was on, large steps zig-zagged
+// and lost the hysteresis). The hinges'
 // blocks (c, d) are the bend-shear spring's; the pattern holds them (the step passes the
 // bend-shear springs with zero stiffness).
 #pragma once
