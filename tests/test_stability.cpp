@@ -110,14 +110,7 @@ double oscillatorPeriodInSteps(bool guard) {
     s.time.frameDt = 0.01f;
     s.time.substeps = 10; // dt = 1 ms
     s.time.stabilityGuard = guard;
-    MeshData m;
-    m.positions = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    m.triangles = {{0, 1, 2}};
-    m.cornerUVs = {{Vec2d(0, 0), Vec2d(1, 0), Vec2d(0.5, 1)}};
-    EXPECT_EQ(w.rebuild(m), "");
-    w.cloth.setPinned(0, true);
-    w.cloth.setPinned(1, true);
-    w.cloth.x[2].y() += 1e-3f;
+    EXPECT_EQ(test::buildOscillator(w), "");
     std::vector<double> crossings; // sub-steps at which u changes sign, linearly interpolated
     double uPrev = 1e-3;
     for (int n = 1; n <= 400; ++n) {
