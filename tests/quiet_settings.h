@@ -1,7 +1,11 @@
 // Settings for tests that watch one force alone (shared by the physics, limit, stability and wind
-// tests): every force but the springs switched off.
+// tests): every force but the springs switched off; and the one-particle oscillator of the
+// stability and kes tests.
 #pragma once
 #include "clothtear/settings.h"
+#include "clothtear/world.h"
+
+#include <string>
 
 namespace clothtear::test {
 
@@ -19,6 +23,23 @@ inline Settings quietSettings() {
     s.wind.enabled = false;
     s.cloth.pin = PinMode::None;
     return s;
+}
+
+// One oscillator: the world's cloth becomes one triangle with A = (-1, 0) and B = (1, 0) pinned and
+// C = (0, 1) free, C displaced by 1 mm across A-B (w.settings as the test set them). C then swings
+// on the springs AC and BC at omega^2 = k / m_C (k per spring; GuardCapsEachSpringAtAThirdOfItsStableStiffness).
+// Returns rebuild's error ("" when built).
+inline std::string buildOscillator(World& w) {
+    MeshData m;
+    m.positions = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    m.triangles = {{0, 1, 2}};
+    m.cornerUVs = {{Vec2d(0, 0), Vec2d(1, 0), Vec2d(0.5, 1)}};
+    const std::string error = w.rebuild(m);
+    if (!error.empty()) return error;
+    w.cloth.setPinned(0, true);
+    w.cloth.setPinned(1, true);
+    w.cloth.x[2].y() += 1e-3f;
+    return "";
 }
 
 } // namespace clothtear::test

@@ -3,16 +3,21 @@
 // printed coefficients; the hysteresis loop of a strip bent back and forth (the energy the law says
 // a cycle loses, at two resolutions; none for the linear model; the reversal threshold that keeps
 // sub-step jitter from eating the loop); the stability guard with the law's
-// tangent; the hinges' memory through a save, a load and a rewind; tearing with the kes law.
+// tangent; the hinges' memory through a save, a load and a rewind; tearing with the kes law; implicit
+// Euler with the law's Jacobian (a hanging strip's static drop, large steps, the hinge's tangent);
+// forward Euler's Rayleigh damping of the law on one mode.
 #include "clothtear/history.h"
 #include "clothtear/kes.h"
+#include "clothtear/mesh.h"
 #include "clothtear/params.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/world_file.h"
+#include "quiet_settings.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace clothtear;
@@ -329,4 +334,202 @@ TEST(Kes, TensionTearsWithTheKesLaw) {
     EXPECT_GT(w.tearLog.total(), 0u);
     EXPECT_EQ(w.tearLog.validationError, "");
     EXPECT_EQ(w.cloth.bendMemory.size(), w.cloth.bends.size());
+}
+
+namespace {
+
+// The free end's mean drop below its rest place (m), along the strip's up direction.
+double freeEndDrop(const World& w) {
+    const MeshFrame f = meshFrame(w.cloth.rest);
+    double drop = 0;
+    int n = 0;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p)
+        if (f.v(w.cloth.rest[p]) <= f.minV + 1e-9) drop += f.up.dot(w.cloth.rest[p] - w.cloth.x[p].cast<double>()), ++n;
+    return drop / n;
+}
+
+// A strip of free length L hanging under its own weight: at s above its free end a unit width
+// carries rho g s, so its strain solves T(e) = rho g s and its end drops int_0^L e(s) ds (midpoint
+// rule, e by bisection: T grows with e).
+double hangingDrop(const KesLaw& law, double rhoG, double length) {
+    const int n = 4000;
+    double drop = 0;
+    for (int i = 0; i < n; ++i) {
+        const double load = rhoG * (i + 0.5) * length / n;
+        double lo = 0, hi = 1;
+        for (int k = 0; k < 100; ++k) (kesTension(law, 0.5 * (lo + hi)) < load ? lo : hi) = 0.5 * (lo + hi);
+        drop += 0.5 * (lo + hi) * length / n;
+    }
+    return drop;
+}
+
+} // namespace
+
+// Implicit Euler with the law's Jacobian (implicit_euler.h: the tensile tangent T'(e) weight along
+// each spring and F / l across it, each hinge's dtau/dtheta): the vacuum strip hanging from its clamp
+// settles where the tensile law puts it. Its end drops 0.1011 mm by the law (T(e) = rho g s, 95 mm
+// free); the mesh carries the load on its diagonals too, as the linear model's does, and drops 3.2 %
+// less (0.0979 mm at 5 and at 2.5 mm, the same within 0.05 %). The explicit guard at 5 mm (1852
+// sub-steps a frame) settles on the same drop (an equilibrium does not depend on the integrator): so
+// does implicit Euler with one sub-step a frame (dt = 16.7 ms, 800 x the explicit step). Before the
+// Jacobian the law entered implicit Euler as an explicit force, capped by the guard for a step that
+// long: the end dropped 1.87 mm (19 x) and the swing below reached the length limit (3.2 %).
+TEST(Kes, ImplicitEulerHangsAtTheLawsStaticElongation) {
+    const KesLaw law = kesLawSI(MaterialSettings{});
+    const double predicted = hangingDrop(law, 0.23 * 9.81, 0.095);
+    EXPECT_NEAR(predicted, 1.011e-4, 1e-7);
+    auto hang = [](std::vector<std::string> sets, int frames) {
+        sets.push_back("impulse.spin=0"); // hanging at rest from the clamp
+        World w = scene("impulse-rotation", sets);
+        for (int f = 0; f < frames && w.finite; ++f) w.step();
+        EXPECT_TRUE(w.finite) << w.nonFiniteWhere;
+        EXPECT_LT(w.maxSpeed, 1e-3f) << "settled (the stretch modes, ~1e3 rad/s: under 1e-6 m)";
+        return freeEndDrop(w);
+    };
+    const std::vector<std::string> fine = {"cloth.resolution_x=9", "cloth.resolution_y=41"};
+    const double coarse = hang({"time.integrator=implicit-euler"}, 60);
+    std::vector<std::string> fineImplicit = fine;
+    fineImplicit.push_back("time.integrator=implicit-euler");
+    const double fineDrop = hang(fineImplicit, 60);
+    EXPECT_NEAR(coarse, predicted, 0.05 * predicted) << "the law's drop, within the mesh's share on its diagonals";
+    EXPECT_LT(coarse, predicted) << "the diagonals carry some of the load";
+    EXPECT_NEAR(fineDrop, coarse, 0.005 * coarse) << "5 mm and 2.5 mm";
+    const double oneSubstep = hang({"time.integrator=implicit-euler", "time.substeps=1"}, 60);
+    EXPECT_NEAR(oneSubstep, coarse, 0.005 * coarse) << "dt = 16.7 ms";
+    const double explicitGuard = hang({"time.integrator=semi-implicit-euler"}, 40);
+    EXPECT_NEAR(explicitGuard, coarse, 0.005 * coarse) << "the explicit guard's equilibrium";
+}
+
+// The free end's mean offset along the strip's normal (m): the swing's coordinate.
+double freeEndOffset(const World& w) {
+    const MeshFrame f = meshFrame(w.cloth.rest);
+    double offset = 0;
+    int n = 0;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p)
+        if (f.v(w.cloth.rest[p]) <= f.minV + 1e-9) offset += f.normal.dot(w.cloth.x[p].cast<double>() - w.cloth.rest[p]), ++n;
+    return offset / n;
+}
+
+// Large steps: the vacuum swing (released 60 mm out, so every hinge bends and reverses) with
+// implicit Euler at 10 and at 1 sub-step a frame stays finite with strains far below the limit
+// (3 %, where the springs went before the Jacobian), and at 10 it still swings as the explicit
+// integrators do (semi-implicit Euler with the guard: period 0.414 s, the amplitude halved by
+// 1.31 s): the period within 3 % of that (0.422 s), and the hysteresis damps it (the last second's
+// swing under half the first). With the branch's slope in the hinges' Jacobian instead of the
+// law's largest (HingeTangent, kes.h) the hinges zig-zagged at 10 sub-steps: the period of
+// D1 = 0 (0.50 s), no decay.
+TEST(Kes, ImplicitEulerSwingsAtLargeSteps) {
+    for (const char* substeps : {"10", "1"}) {
+        World w = scene("swing-vacuum", {"time.integrator=implicit-euler", std::string("time.substeps=") + substeps});
+        std::vector<double> offset, peaks; // per frame; times of the maxima
+        float fastest = 0;
+        for (int f = 0; f < 300 && w.finite; ++f) {
+            w.step();
+            fastest = std::max(fastest, w.maxSpeed);
+            offset.push_back(freeEndOffset(w));
+            const size_t k = offset.size();
+            if (k >= 3 && offset[k - 2] > offset[k - 3] && offset[k - 2] >= offset[k - 1])
+                peaks.push_back((k - 1) * double(w.settings.time.frameDt)); // the frame before
+        }
+        EXPECT_TRUE(w.finite) << substeps << ": " << w.nonFiniteWhere;
+        EXPECT_LT(fastest, 2.f) << substeps << ": a swing from 60 mm";
+        EXPECT_LT(w.maxStrain, 0.01f) << substeps;
+        if (std::string(substeps) != "10") continue;
+        // Over the first three periods, while the swing is large (the bench's period counts only
+        // half swings over 6 mm; as the swing dies out the steep start of each branch shortens it:
+        // 0.37 s in the last seconds here).
+        ASSERT_GE(peaks.size(), 4u);
+        const double period = (peaks[3] - peaks[0]) / 3.0;
+        EXPECT_NEAR(period, 0.414, 0.03 * 0.414);
+        auto range = [&](size_t from, size_t to) {
+            const auto [lo, hi] = std::minmax_element(offset.begin() + from, offset.begin() + to);
+            return *hi - *lo;
+        };
+        EXPECT_LT(range(offset.size() - 60, offset.size()), 0.5 * range(0, 30)) << "the hysteresis damps the swing";
+    }
+}
+
+// The hinge's linearization (HingeTangent, for implicit Euler) against a finite difference: at a
+// flat hinge (tau = 0, so the dropped term tau d^2 theta / dx^2 is zero) moving its corners by h u
+// turns it by h g . u and its torque by (dtau/dtheta) h g . u, dtau/dtheta = (D + alpha D1) w / L on
+// the virgin curve; the forces are then -tau g.
+TEST(Kes, HingeTangentIsTheForcesDerivative) {
+    World w = scene("swing-vacuum", {"swing.offset=0"});
+    const Cloth& c = w.cloth;
+    const KesLaw law = kesLawSI(w.settings.material);
+    const Index b = c.bends.size() / 2;
+    const HingeGeometry h = hingeOf(c, b);
+    const Index corners[4] = {h.c, h.d, h.a, h.e};
+    std::vector<HingeTangent> tangents;
+    std::vector<BendMemory> memory;
+    std::vector<Vec3d> f0(c.particleCount(), Vec3d::Zero());
+    HingeStep step;
+    step.tangents = &tangents;
+    materialBendForces(c, w.settings.material, memory, f0, nullptr, step);
+    ASSERT_EQ(tangents.size(), c.bends.size());
+    const HingeTangent& t = tangents[b];
+    EXPECT_NEAR(t.stiffness, kesMaxBendSlope(law) * h.width / h.length, 1e-9 * t.stiffness);
+    // A move of all four corners (so the angle changes) along the mesh's normal, different amounts.
+    const double amount[4] = {1.0, -0.5, 0.25, 0.75}, step_h = 1e-6;
+    const Vec3d normal = meshFrame(c.rest).normal;
+    double rate = 0;
+    for (int i = 0; i < 4; ++i) rate += t.grad[i].dot(amount[i] * normal);
+    ASSERT_GT(std::abs(rate), 1.0) << "the move bends the hinge";
+    Cloth moved = c;
+    for (int i = 0; i < 4; ++i) moved.x[corners[i]] += (step_h * amount[i] * normal).cast<float>();
+    // Hinge b's own torque after the move (its neighbours bend too: their forces are not its).
+    std::vector<double> moments;
+    std::vector<BendMemory> memory1;
+    std::vector<Vec3d> f1(c.particleCount(), Vec3d::Zero());
+    materialBendForces(moved, w.settings.material, memory1, f1, &moments);
+    const double tau = moments[2 * b] * h.width;
+    const double expectedTau = t.stiffness * rate * step_h;
+    EXPECT_NEAR(tau, expectedTau, 0.01 * std::abs(expectedTau)) << "dtau = dtau/dtheta dtheta";
+}
+
+// Forward Euler's Rayleigh damping of the law (kesRayleighTime, kes.h), on one mode: a triangle with
+// A = (-1, 0) and B = (1, 0) pinned and C = (0, 1) free (no gravity, air, damping, limit or guard;
+// one triangle has no hinge), C displaced by 1 mm across A-B. A law with a linear term only,
+// T = c1 e, makes each spring k = c1 weight (weight 1/2) and C swing at omega^2 = k / m_C
+// (tests/test_stability.cpp, GuardCapsEachSpringAtAThirdOfItsStableStiffness). Forward Euler
+// multiplies that mode's amplitude by sqrt(1 - g dt + (omega dt)^2) a step: the undamped method
+// (the linear model with the same k) grows it by sqrt(1 + (omega dt)^2); the law with C = 2 dt K
+// (g = 2 dt omega^2) shrinks it by sqrt(1 - (omega dt)^2). Here omega dt = 0.1: 1.00499 against
+// 0.99499 a step, over 400 steps (six periods) x 7.3 against x 0.13.
+double amplitudeRatioPerStep(const char* model) {
+    World w;
+    w.settings = test::quietSettings();
+    Settings& s = w.settings;
+    s.time.integrator = Integrator::ForwardEuler;
+    s.time.stabilityGuard = false;
+    s.time.frameDt = 0.01f;
+    s.time.substeps = 10; // dt = 1 ms
+    const double mC = double(s.material.density) / 3.0, k = 1e4 * mC; // omega^2 = k / m_C = 1e4 / s^2
+    s.material.stretchStiffness = float(k / 0.5);                      // linear: S weight = k
+    s.material.kesT1 = float(k / 0.5 / (kGramForce / kCentimetre * 100.0)); // kes: c1 weight = k
+    s.material.kesT2 = s.material.kesT3 = s.material.kesT4 = 0.f;
+    s.material.kesBendD = s.material.kesBendD1 = 0.f;
+    EXPECT_EQ(setParamFromString(s, "material.model", model), "");
+    EXPECT_EQ(test::buildOscillator(w), "");
+    std::vector<std::pair<int, double>> peaks; // (step, u) at the maxima of |u|
+    double u1 = 1e-3, u2 = 1e-3;
+    for (int n = 1; n <= 400; ++n) {
+        w.substep();
+        const double u = double(w.cloth.x[2].y()) - 1.0;
+        if (n >= 2 && std::abs(u1) > std::abs(u2) && std::abs(u1) >= std::abs(u)) peaks.emplace_back(n - 1, std::abs(u1));
+        u2 = u1, u1 = u;
+    }
+    EXPECT_TRUE(w.cloth.x[2].allFinite());
+    EXPECT_GE(peaks.size(), 8u) << model;
+    if (peaks.size() < 2) return 0;
+    const auto [n0, a0] = peaks.front();
+    const auto [n1, a1] = peaks.back();
+    return std::pow(a1 / a0, 1.0 / double(n1 - n0));
+}
+
+TEST(Kes, ForwardEulerDampsTheLawAtTheRateItsRayleighTermGives) {
+    const double omegaDt2 = 0.01; // (omega dt)^2
+    const double linear = amplitudeRatioPerStep("linear"), kes = amplitudeRatioPerStep("kes");
+    EXPECT_NEAR(std::log(linear), 0.5 * std::log(1 + omegaDt2), 0.01 * 0.5 * omegaDt2) << "the undamped method grows";
+    EXPECT_NEAR(std::log(kes), 0.5 * std::log(1 - omegaDt2), 0.01 * 0.5 * omegaDt2) << "the law's Rayleigh damping";
 }

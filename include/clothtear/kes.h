@@ -52,6 +52,31 @@ double kesTangent(const KesLaw& law, double strain);
 // the tangent grows with |e| and this is kesTangent(strainMax); also > 0 when T'(0) = 0).
 double kesMaxTangent(const KesLaw& law, double strainMax);
 
+// The tangent the step applies at strain e: kesTangent up to |e| = strainRange, kesTangent(strainRange)
+// beyond (the slope of kesTensionInRange).
+double kesTangentInRange(const KesLaw& law, double strain, double strainRange);
+
+// ---- forward Euler and the law ------------------------------------------------------------------
+//
+// Forward Euler multiplies the energy of a mode (angular frequency omega, damping rate g) by
+// 1 - g dt + (omega dt)^2 a step: stable only while g > omega^2 dt, i.e. dt < kd / k per spring.
+// The law's tangent makes material.stretch_damping a billion times too small for that, and the
+// hinges have no damping (docs/kes-material.md, "Forward Euler"). With forward Euler the kes
+// springs and hinges therefore get Rayleigh damping C = beta K_t, beta = kKesForwardEulerDamping dt,
+// K_t the law's tangent where each spring and hinge is now: a mode of the linearized law then has
+// g = beta omega^2 and its energy factor is 1 - (omega dt)^2 (implicit Euler's own numerical
+// damping, to first order) as long as omega dt <= 1, which the guard keeps (kesGuardWeight). It
+// vanishes with dt: forward Euler still converges to the undamped law.
+inline constexpr double kKesForwardEulerDamping = 2.0; // beta / dt
+// The Rayleigh time beta (s) the step applies at sub-step dt: kKesForwardEulerDamping dt with
+// forward Euler and material.model = kes, else 0.
+double kesRayleighTime(const Settings& settings, double dt);
+// How many times its tangent the stability guard counts a kes spring or hinge: 1, or with forward
+// Euler 1 + 2 kKesForwardEulerDamping = 5: the Rayleigh damping adds dt (beta k) = 2 dt^2 k to a
+// spring's share 0.5 dt^2 k of the guard's sum (stability.cpp), 2.5 dt^2 k = 0.5 dt^2 (5 k); the
+// guard's step then has (omega dt)^2 <= 0.8.
+double kesGuardWeight(const Settings& settings);
+
 // The strains the step lets a structural spring reach, over which the stability guard takes the
 // law's largest tangent: limit.max_stretch with the length limit on (it pulls longer springs back
 // each sub-step), else the tear threshold with tearing on, else 0.5.
@@ -75,7 +100,11 @@ double kesMomentOnBranch(const KesLaw& law, const BendMemory& mem, double curvat
 //     |     .  /
 //     |   .   /   the reversal's branch: tentative within `reversal` of K_x, committed beyond
 //     +----------------- K
-double kesBendAdvance(const KesLaw& law, BendMemory& mem, double curvature);
+// `slope`, when not null, receives dM/dK of the branch M(K) was taken from (kesSlopeOnBranch).
+double kesBendAdvance(const KesLaw& law, BendMemory& mem, double curvature, double* slope = nullptr);
+// The slope dM/dK (N m) of the branch (K_r, M_r, s) at K: D + alpha D1 exp(-alpha |K - K_r|) on a
+// branch K moves away from its start along (kesBendAdvance returns that branch's slope).
+double kesSlopeOnBranch(const KesLaw& law, const BendMemory& mem, double curvature);
 // Largest slope dM/dK of the law (right after a reversal): D + alpha D1, N m.
 double kesMaxBendSlope(const KesLaw& law);
 // Energy lost per unit area in one closed cycle K: -Km -> Km -> -Km on the steady loop, J/m^2:
@@ -113,14 +142,39 @@ double kesHingeStiffness(const KesLaw& law, const HingeGeometry& hinge);
 // gradients sum to zero and exert no torque. Returns false for a degenerate hinge (a zero-area side).
 bool dihedralAngle(const Vec3& c, const Vec3& d, const Vec3& a, const Vec3& e, double& theta, Vec3d grad[4]);
 
+// One hinge linearized for implicit Euler: its corners (c, d, a, e), the gradient of its angle and
+// the stiffness dtau/dtheta = S w / L (N m per radian) its forces' Jacobian takes, without the term
+// tau d^2 theta / dx^2 (Gauss-Newton: positive semi-definite): -dtau/dtheta grad_i grad_j^T.
+// S is the law's largest slope D + alpha D1 (kesMaxBendSlope), not the slope of the branch the hinge
+// is on: a reversal within the step makes the slope jump to it (x 25 from D with Tagawa's values).
+// With the branch's slope, the vacuum swing at 10 implicit sub-steps a frame zig-zagged (374
+// reversals per hinge per second beyond 0.3 1/m, the swing alone makes 5): no hysteresis, the
+// period of D1 = 0 (0.502 s for 0.414); with the largest, 3 a second and 0.418 s
+// (docs/kes-material.md, "Implicit Euler").
+struct HingeTangent {
+    Index p[4];
+    Vec3d grad[4];   // 1/m
+    double stiffness; // N m
+};
+
+// How the step applies the hinges in one sub-step (the defaults: forces only, as the tests call it).
+struct HingeStep {
+    // > 0 (s): the stability guard's cap, as on springs (spring_caps.h): a hinge whose stiffness
+    // (kesHingeStiffness) x capWeight times its corners' inverse masses times capDt^2 is over 1/3
+    // has its torque scaled down to meet it.
+    double capDt = 0;
+    double capWeight = 1; // kesGuardWeight
+    // > 0 (s): Rayleigh damping, a torque -rayleigh x dtau/dtheta x dtheta/dt (kesRayleighTime).
+    double rayleigh = 0;
+    std::vector<HingeTangent>* tangents = nullptr; // when not null: every hinge's HingeTangent
+};
+
 // Bending forces of the material model on every particle, added to `force` (N; sized to the
 // particles): kes, the hinges with their memory advanced to the current curvatures (memory sized to
 // the bends, a new one starts at rest); linear, the bend-shear springs' Hooke forces without damping.
 // `moment`, when not null, receives each hinge's M (N, per unit width) and curvature (1/m) in pairs.
-// capDt > 0 (s): the stability guard's cap, as on springs (spring_caps.h): a hinge whose stiffness
-// (kesHingeStiffness) times its corners' inverse masses times capDt^2 is over 1/3 has its torque
-// scaled down to meet it.
 void materialBendForces(const Cloth& cloth, const MaterialSettings& m, std::vector<BendMemory>& memory,
-                        std::vector<Vec3d>& force, std::vector<double>* moment = nullptr, double capDt = 0);
+                        std::vector<Vec3d>& force, std::vector<double>* moment = nullptr,
+                        const HingeStep& step = {});
 
 } // namespace clothtear

@@ -93,7 +93,8 @@ void springSumsPerParticle(const Cloth& cloth, const Settings& settings, std::ve
 
 // The structural springs' stiffness and damping per unit weight as the material asks for them (N/m,
 // N s/m): material.stretch_*, or with material.model = kes the tensile law's largest tangent over
-// kesStrainRange (the guard's and the spring cache's "asked for").
+// kesStrainRange, times kesGuardWeight (5 with forward Euler: its Rayleigh damping; kes.h) (the
+// guard's and the spring cache's "asked for").
 std::pair<double, double> structuralAsked(const Settings& settings);
 
 class World {

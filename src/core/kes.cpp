@@ -48,6 +48,21 @@ double kesTangent(const KesLaw& law, double e) {
     return law.c[1] + a * (2 * law.c[2] + a * (3 * law.c[3] + a * 4 * law.c[4]));
 }
 
+double kesTangentInRange(const KesLaw& law, double e, double range) {
+    return kesTangent(law, std::min(std::abs(e), range));
+}
+
+namespace {
+// Forward Euler with the law: the step adds Rayleigh damping (kes.h).
+bool kesForwardEuler(const Settings& s) {
+    return s.material.model == MaterialModel::Kes && s.time.integrator == Integrator::ForwardEuler;
+}
+} // namespace
+
+double kesRayleighTime(const Settings& s, double dt) { return kesForwardEuler(s) ? kKesForwardEulerDamping * dt : 0.0; }
+
+double kesGuardWeight(const Settings& s) { return kesForwardEuler(s) ? 1.0 + 2.0 * kKesForwardEulerDamping : 1.0; }
+
 double kesMaxTangent(const KesLaw& law, double strainMax) {
     return kesTangent(law, std::max(0.0, strainMax));
 }
@@ -65,19 +80,30 @@ double kesMomentOnBranch(const KesLaw& law, const BendMemory& mem, double K) {
     return double(mem.reversalM) + law.D * dK + s * law.D1 * (1.0 - std::exp(-law.alpha * std::abs(dK)));
 }
 
-double kesBendAdvance(const KesLaw& law, BendMemory& mem, double K) {
+double kesSlopeOnBranch(const KesLaw& law, const BendMemory& mem, double K) {
+    const double dK = K - double(mem.reversalK);
+    const double s = mem.direction != 0 ? double(mem.direction) : (dK >= 0 ? 1.0 : -1.0);
+    const double away = s * dK >= 0 ? 1.0 : -1.0; // -1 only on a branch K has come back past its start
+    return law.D + away * law.alpha * law.D1 * std::exp(-law.alpha * std::abs(dK));
+}
+
+double kesBendAdvance(const KesLaw& law, BendMemory& mem, double K, double* slope) {
+    auto on = [&](const BendMemory& branch) {
+        if (slope) *slope = kesSlopeOnBranch(law, branch, K);
+        return kesMomentOnBranch(law, branch, K);
+    };
     const double extreme = double(mem.extremeK);
-    if (K == extreme) return kesMomentOnBranch(law, mem, K);
+    if (K == extreme) return on(mem);
     if (mem.direction == 0) {
         // First move: the virgin curve from (reversalK, reversalM), in the direction K went.
         mem.direction = K > extreme ? 1 : -1;
         mem.extremeK = float(K);
-        return kesMomentOnBranch(law, mem, K);
+        return on(mem);
     }
     const double s = double(mem.direction);
     if (s * (K - extreme) > 0) { // on along the branch
         mem.extremeK = float(K);
-        return kesMomentOnBranch(law, mem, K);
+        return on(mem);
     }
     // Behind the extreme: the branch a reversal there starts (continuous in M at the extreme).
     BendMemory reversed = mem;
@@ -86,7 +112,7 @@ double kesBendAdvance(const KesLaw& law, BendMemory& mem, double K) {
     reversed.direction = -mem.direction;
     reversed.extremeK = float(K);
     if (s * (extreme - K) > law.reversal) mem = reversed; // back far enough: the reversal counts
-    return kesMomentOnBranch(law, reversed, K);
+    return on(reversed);
 }
 
 double kesMaxBendSlope(const KesLaw& law) { return law.D + law.alpha * law.D1; }
@@ -143,8 +169,9 @@ bool dihedralAngle(const Vec3& cf, const Vec3& df, const Vec3& af, const Vec3& e
 }
 
 void materialBendForces(const Cloth& cloth, const MaterialSettings& m, std::vector<BendMemory>& memory,
-                        std::vector<Vec3d>& force, std::vector<double>* moment, double capDt) {
+                        std::vector<Vec3d>& force, std::vector<double>* moment, const HingeStep& step) {
     if (moment) moment->clear();
+    if (step.tangents) step.tangents->clear();
     if (m.model == MaterialModel::Linear) {
         for (const Spring& s : cloth.bends) {
             const Vec3d d = (cloth.x[s.b] - cloth.x[s.a]).cast<double>();
@@ -164,18 +191,29 @@ void materialBendForces(const Cloth& cloth, const MaterialSettings& m, std::vect
         Vec3d g[4];
         if (!(h.length > 0) || !dihedralAngle(cloth.x[h.c], cloth.x[h.d], cloth.x[h.a], cloth.x[h.e], theta, g)) continue;
         const double K = theta / h.length;
-        const double M = kesBendAdvance(law, memory[b], K);
+        double slope = 0;
+        const double M = kesBendAdvance(law, memory[b], K, &slope);
         if (moment) moment->push_back(M), moment->push_back(K);
-        // F_i = -tau d theta / dx_i, tau = M w (the torque about the edge).
-        double tau = M * h.width;
+        // F_i = -tau d theta / dx_i, tau = M w (the torque about the edge); dtau/dtheta = slope w / L.
+        double tau = M * h.width, dTau = slope * h.width / h.length;
         const Index p[4] = {h.c, h.d, h.a, h.e};
-        if (capDt > 0) {
+        if (step.capDt > 0) {
             double w = 0;
             for (Index q : p) w += cloth.invMass[q];
-            const double load = 2 * kesHingeStiffness(law, h) * w * capDt * capDt; // a spring's k (w_a + w_b) dt^2
-            if (load > kHingeCap) tau *= kHingeCap / load;
+            // a spring's k (w_a + w_b) dt^2
+            const double load = 2 * step.capWeight * kesHingeStiffness(law, h) * w * step.capDt * step.capDt;
+            if (load > kHingeCap) tau *= kHingeCap / load, dTau *= kHingeCap / load;
+        }
+        if (step.rayleigh > 0) { // tau += beta dtau/dtheta dtheta/dt (Rayleigh: C = beta K)
+            double thetaRate = 0;
+            for (int i = 0; i < 4; ++i) thetaRate += g[i].dot(cloth.v[p[i]].cast<double>());
+            tau += step.rayleigh * dTau * thetaRate;
         }
         for (int i = 0; i < 4; ++i) force[p[i]] -= tau * g[i];
+        // Implicit Euler's linearization: the largest slope, not the branch's (HingeTangent, kes.h).
+        if (step.tangents)
+            step.tangents->push_back(HingeTangent{{p[0], p[1], p[2], p[3]}, {g[0], g[1], g[2], g[3]},
+                                                  kesMaxBendSlope(law) * h.width / h.length});
     }
 }
 

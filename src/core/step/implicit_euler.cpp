@@ -7,7 +7,9 @@
 
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <iterator>
 
 namespace clothtear {
 namespace {
@@ -75,6 +77,42 @@ void buildPattern(const Cloth& cloth, std::span<const SpringKind> kinds, Implici
         C.dv.setZero(unknowns);
 }
 
+// kes hinges (implicit_euler.h): H = (dtau/dtheta) g g^T over the four corners, dt^2 H into A and
+// -dt^2 H v into b (their forces are in the step's external force). The blocks' slots are found in
+// A's rows (a hinge's corners are all joined by springs: the pattern has every pair).
+void addHinges(std::span<const HingeTangent> hinges, double dt, const Cloth& cloth, ImplicitEulerCache& C,
+               Eigen::SparseMatrix<double, Eigen::RowMajor>& A) {
+    double* val = A.valuePtr();
+    for (const HingeTangent& h : hinges) {
+        if (!(h.stiffness > 0))
+            continue;
+        double rate = 0; // dtheta/dt
+        for (int i = 0; i < 4; ++i)
+            rate += h.grad[i].dot(cloth.v[h.p[i]].cast<double>());
+        const double c = dt * dt * h.stiffness;
+        for (int i = 0; i < 4; ++i) {
+            const int ri = C.row[h.p[i]];
+            if (ri < 0)
+                continue;
+            C.b.segment<3>(ri) -= c * rate * h.grad[i];
+            for (int j = 0; j < 4; ++j) {
+                const int rj = C.row[h.p[j]];
+                if (rj < 0)
+                    continue;
+                const Mat3 B = c * h.grad[i] * h.grad[j].transpose();
+                for (int r = 0; r < 3; ++r) {
+                    const int slot = slotOf(A, ri + r, rj);
+                    assert(slot >= 0 && "a hinge's corners are joined in the pattern");
+                    if (slot < 0)
+                        continue;
+                    for (int col = 0; col < 3; ++col)
+                        val[slot + col] += B(r, col);
+                }
+            }
+        }
+    }
+}
+
 } // namespace
 
 void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const ImplicitEulerOptions& options,
@@ -109,11 +147,13 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
 
     // Springs: forces, and the blocks dt D + dt^2 K (as positive matrices H = -K, B = -D).
     size_t si = 0;
-    for (const SpringKind& kind : in.kinds)
+    for (size_t ki = 0; ki < std::size(in.kinds); ++ki) {
+        const SpringKind& kind = in.kinds[ki];
+        const bool law = ki == 0 && in.kes; // kes: the structural springs follow the tensile law
         for (const Spring& s : kind.springs) {
             const std::array<int, 12>& o = C.springSlots[si++];
             const double k = double(kind.stiffness) * s.weight, kd = double(kind.damping) * s.weight;
-            if (k == 0.0 && kd == 0.0)
+            if (k == 0.0 && kd == 0.0 && !law)
                 continue;
             const V3 d = (cloth.x[s.b] - cloth.x[s.a]).cast<double>();
             const double l = d.norm();
@@ -121,12 +161,22 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
                 continue;
             const V3 nrm = d / l;
             const V3 vab = (cloth.v[s.b] - cloth.v[s.a]).cast<double>();
-            const V3 fa = (k * (l - s.rest) + kd * vab.dot(nrm)) * nrm;
+            const Mat3 nn = nrm * nrm.transpose();
+            V3 fa;
+            Mat3 H;
+            if (law) {
+                const double e = (l - s.rest) / s.rest;
+                const double F = kesTensionInRange(*in.kes, e, in.kesRange) * s.weight * s.rest;
+                fa = (F + kd * vab.dot(nrm)) * nrm;
+                H = kesTangentInRange(*in.kes, e, in.kesRange) * s.weight * nn +
+                    std::max(0.0, F / l) * (Mat3::Identity() - nn);
+            } else {
+                fa = (k * (l - s.rest) + kd * vab.dot(nrm)) * nrm;
+                const double geo = std::max(0.0, 1.0 - s.rest / l);
+                H = k * (nn + geo * (Mat3::Identity() - nn));
+            }
             f[s.a] += fa;
             f[s.b] -= fa;
-            const Mat3 nn = nrm * nrm.transpose();
-            const double geo = std::max(0.0, 1.0 - s.rest / l);
-            const Mat3 H = k * (nn + geo * (Mat3::Identity() - nn));
             const Mat3 B = dt * kd * nn + dt * dt * H;
             // dt^2 K v on each end: -dt^2 H (v_a - v_b) for a, the opposite for b.
             const V3 hv = dt * dt * (H * vab); // = -dt^2 H (v_a - v_b)
@@ -143,6 +193,8 @@ void implicitEulerStep(Cloth& cloth, const ReferenceStepInput& in, const Implici
                         val[o[3 * blk + i] + j] += sign * B(i, j);
             }
         }
+    }
+    addHinges(in.hinges, dt, cloth, C, A);
     for (Index p = 0; p < n; ++p)
         if (C.row[p] >= 0)
             C.b.segment<3>(C.row[p]) += dt * f[p];

@@ -16,6 +16,19 @@
 //   df_a/dv_a = -kd n n^T     (the damping force's dependence on x is neglected, as in Baraff-Witkin)
 // and the (a, b) blocks are the negatives. Air drag f = -c A v adds c A I = m dragPerMass I to M's
 // diagonal (times dt).
+//
+// material.model = kes (Tagawa's law, kes.h): a structural spring's force is F(l) = T(e) w
+// (e = (l - L) / L, w = weight L the spring's width), so
+//   df_a/dx_a = -(T'(e) weight n n^T + max(0, F / l) (I - n n^T))
+// (the linear spring's matrix is this with T = k (l - L) / weight / L). A hinge (c, d across
+// edge a-e) with angle theta and torque tau = M(K) w gives f_i = -tau dtheta/dx_i, and, without the
+// term tau d^2 theta / dx_i dx_j (Gauss-Newton, so the matrix stays positive definite),
+//   df_i/dx_j = -S w / L  dtheta/dx_i dtheta/dx_j^T
+// with S the law's largest slope dM/dK, D + alpha D1, which a reversal within the step jumps to
+// (HingeTangent in kes.h: with the slope of the branch the hinge was on, large steps zig-zagged
+// and lost the hysteresis). The hinges'
+// blocks (c, d) are the bend-shear spring's; the pattern holds them (the step passes the
+// bend-shear springs with zero stiffness).
 #pragma once
 #include "reference_step.h"
 

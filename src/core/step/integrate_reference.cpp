@@ -27,11 +27,14 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
         }
     }
     const MaterialSettings& m = settings.material;
-    // kes: the law's forces enter as external forces (explicit within the reference step: stable
-    // only at the steps an explicit integrator needs; docs/kes-material.md), the springs keep their
-    // damping only.
+    // kes: with implicit Euler the structural springs follow the law inside the solve and the
+    // hinges' forces come with their Jacobians (implicit_euler.h); with XPBD the law's forces enter
+    // as external forces (explicit within its step: stable only at the steps an explicit integrator
+    // needs; docs/kes-material.md), the springs keep their damping only.
     const bool kes = m.model == MaterialModel::Kes;
-    if (kes) kesForces(ctx, cloth, state, ext);
+    const bool implicit = settings.time.integrator == Integrator::ImplicitEuler;
+    const KesLaw law = kesLawSI(m);
+    if (kes) kesForces(ctx, cloth, state, ext, implicit ? &state.kesHingeTangents : nullptr);
     static const std::vector<Spring> kNoSprings;
     // Implicit Euler treats air drag implicitly (stable at any value); XPBD applies it explicitly,
     // capped by the guard like the explicit integrators.
@@ -43,9 +46,14 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
                           drag,
                           ctx.keep,
                           {SpringKind{cloth.springs, kes ? 0.f : m.stretchStiffness, m.stretchDamping},
-                           SpringKind{kes ? kNoSprings : cloth.bends, m.bendStiffness, m.bendDamping}},
-                          ext};
-    if (settings.time.integrator == Integrator::ImplicitEuler) {
+                           kes && implicit ? SpringKind{cloth.bends, 0.f, 0.f} // the hinges' (c, d) blocks
+                           : SpringKind{kes ? kNoSprings : cloth.bends, m.bendStiffness, m.bendDamping}},
+                          ext,
+                          kes && implicit ? &law : nullptr,
+                          kesStrainRange(settings),
+                          kes && implicit ? std::span<const HingeTangent>(state.kesHingeTangents)
+                                          : std::span<const HingeTangent>()};
+    if (implicit) {
         ImplicitCacheSlot& slot = state.implicit;
         // The pattern follows the topology and the pinned particles: a stale cache starts afresh.
         if (!slot.cache || !slot.stamp.fresh(ctx.revisions, ImplicitCacheSlot::kDeps)) {

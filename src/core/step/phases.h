@@ -13,8 +13,11 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state);
 // material.model = kes (kes_forces.cpp): the tensile law on the structural springs and the
 // hysteretic hinges, on one thread's buffer; advances the hinges' memory (Cloth::bendMemory).
 void phaseSpringsKes(const StepContext& ctx, Cloth& cloth, StepState& state);
-// The same forces summed into `force` (N per particle) for the reference integrators.
-void kesForces(const StepContext& ctx, Cloth& cloth, StepState& state, std::vector<Vec3>& force);
+// The same forces summed into `force` (N per particle) for the reference integrators. With
+// `implicit` (implicit Euler): the hinges' forces only, uncapped, each hinge linearized into
+// *implicit (the solve applies the tensile law itself, implicit_euler.h).
+void kesForces(const StepContext& ctx, Cloth& cloth, StepState& state, std::vector<Vec3>& force,
+               std::vector<HingeTangent>* implicit = nullptr);
 // Brings the spring cache up to date (springs.cpp); the strain scan and the ball broad phase read it.
 void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state);
 // wind.cpp: wind drag on every triangle into the force buffers.

@@ -6,6 +6,7 @@
 // both references are stable at any step.
 #pragma once
 #include "clothtear/cloth.h"
+#include "clothtear/kes.h"
 
 #include <span>
 
@@ -26,6 +27,12 @@ struct ReferenceStepInput {
     float keep;                  // Keserica air model: fraction of velocity kept per sub-step (1 otherwise)
     SpringKind kinds[2];         // structural, bend-shear
     std::span<const Vec3> force; // N per particle from other phases (wind); empty: none
+    // material.model = kes, implicit Euler: the structural springs (kinds[0]; its stiffness unused)
+    // follow the law, F = T(e) width up to kesStrainRange and its tangent beyond
+    // (kesTensionInRange), and the hinges' forces (in `force`) bring their Jacobians.
+    const KesLaw* kes = nullptr;
+    double kesRange = 0;                  // strain
+    std::span<const HingeTangent> hinges; // kes: every hinge linearized (kes.h)
 };
 
 } // namespace clothtear

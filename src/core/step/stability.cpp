@@ -10,7 +10,10 @@
 // A nonlinear law (material.model = kes) enters with its largest tangent stiffness over the strains
 // the step lets a spring reach (kesStrainRange in kes.h), so the estimate holds wherever it goes.
 // Forward Euler has no stable step for an undamped mode; the estimate is the same and the
-// stability map (bench/README.md) shows how far it is off for that method.
+// stability map (bench/README.md) shows how far it is off for that method. With kes, forward Euler
+// damps the law's modes (Rayleigh, kesRayleighTime in kes.h) and the law's springs and hinges count
+// kesGuardWeight = 5 times their tangent here: the damping's share of the sum, and (omega dt)^2 <= 0.8
+// where forward Euler with that damping needs omega dt <= 1.
 #include "clothtear/kes.h"
 #include "clothtear/world.h"
 #include "spring_caps.h"
@@ -27,19 +30,20 @@ namespace clothtear {
 // reach (kesStrainRange), and no bend-shear springs (hinges instead, added by addHinges).
 std::pair<double, double> structuralAsked(const Settings& s) {
     if (s.material.model == MaterialModel::Kes)
-        return {kesMaxTangent(kesLawSI(s.material), kesStrainRange(s)), s.material.stretchDamping};
+        return {kesGuardWeight(s) * kesMaxTangent(kesLawSI(s.material), kesStrainRange(s)), s.material.stretchDamping};
     return {s.material.stretchStiffness, s.material.stretchDamping};
 }
 
 namespace {
-// kes: each hinge adds to the Gershgorin row sums of its four corners (kesHingeStiffness, kes.h);
-// hinges have no damping.
+// kes: each hinge adds to the Gershgorin row sums of its four corners (kesHingeStiffness, kes.h,
+// times kesGuardWeight); hinges have no damping of their own.
 void addHinges(const Cloth& cloth, const Settings& s, std::vector<double>& k) {
     if (s.material.model != MaterialModel::Kes) return;
     const KesLaw law = kesLawSI(s.material);
+    const double weight = kesGuardWeight(s);
     for (Index b = 0; b < cloth.bends.size(); ++b) {
         const HingeGeometry h = hingeOf(cloth, b);
-        const double kh = kesHingeStiffness(law, h);
+        const double kh = weight * kesHingeStiffness(law, h);
         for (Index p : {h.c, h.d, h.a, h.e}) k[p] += kh;
     }
 }

@@ -2,6 +2,7 @@
 // (rebuilt through revisions.h), work arrays kept between steps so the step does not allocate, and
 // the little integrator and sleep state that outlives a sub-step. Internal to the core.
 #pragma once
+#include "clothtear/kes.h"
 #include "clothtear/tear.h"
 #include "clothtear/world.h"
 #include "revisions.h"
@@ -168,6 +169,7 @@ struct StepState {
     std::vector<Vec3> externalForce;            // reference integrators: N per particle (wind)
     std::vector<Vec3> xpbdDx;                   // XPBD: displacements within the sub-step
     std::vector<Vec3d> kesHingeForce;           // kes: the hinges' forces of this sub-step (N)
+    std::vector<HingeTangent> kesHingeTangents; // kes, implicit Euler: the hinges linearized
     // Verlet (integrate.cpp): whether the last integration was Verlet (else its next step starts
     // it) and per particle, a dt / 2 of its last step. Part of the state hash.
     bool verletRunning = false;
