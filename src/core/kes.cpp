@@ -191,8 +191,8 @@ void materialBendForces(const Cloth& cloth, const MaterialSettings& m, std::vect
         Vec3d g[4];
         if (!(h.length > 0) || !dihedralAngle(cloth.x[h.c], cloth.x[h.d], cloth.x[h.a], cloth.x[h.e], theta, g)) continue;
         const double K = theta / h.length;
-        double slope = 0;
-        const double M = kesBendAdvance(law, memory[b], K, &slope);
+        double slope = 0; // only the Rayleigh damping reads it (an exp per hinge otherwise spent for nothing)
+        const double M = kesBendAdvance(law, memory[b], K, step.rayleigh > 0 ? &slope : nullptr);
         if (moment) moment->push_back(M), moment->push_back(K);
         // F_i = -tau d theta / dx_i, tau = M w (the torque about the edge); dtau/dtheta = slope w / L.
         double tau = M * h.width, dTau = slope * h.width / h.length;
