@@ -2,10 +2,7 @@
 // Loose threads along a torn edge, alpha-tested: thread k (floor of the thread coordinate) sticks out
 // of the edge by its own length (35 to 100 % of the strip), slanted and thinning to its tip, in the
 // fabric's colour at the edge (a little lighter or darker per thread: cut ends catch the light).
-in vec3 vFrontDiffuse;
-in vec3 vFrontSpecular;
-in vec3 vBackDiffuse;
-in vec3 vBackSpecular;
+in vec4 vLight;
 in vec2 vUV;
 in float vThread;
 in float vAcross;
@@ -13,7 +10,8 @@ in float vAcross;
 uniform sampler2D uTexture;
 uniform bool uUseTexture;
 uniform vec3 uFrontTint;
-uniform vec3 uBackColor; // the back: the same fabric times this shade (cloth.frag.glsl)
+uniform vec3 uBackColor; // the back: the same fabric times this shade (fabric_color.glsl)
+#include "fragment_lighting.glsl"
 
 out vec4 fragColor;
 
@@ -32,7 +30,5 @@ void main() {
     vec3 fabric = uUseTexture ? texture(uTexture, vUV).rgb : vec3(1.0);
     float shade = 0.85 + 0.3 * hash(k + 5.0);
     vec3 base = fabric * shade * (gl_FrontFacing ? uFrontTint : uBackColor);
-    vec3 diffuse = gl_FrontFacing ? vFrontDiffuse : vBackDiffuse;
-    vec3 specular = gl_FrontFacing ? vFrontSpecular : vBackSpecular;
-    fragColor = vec4(base * diffuse + specular, 1.0);
+    fragColor = vec4(shadeTwoSided(base, vLight), 1.0);
 }

@@ -11,19 +11,13 @@ layout(location = 4) in float aAcross; // 0 at the torn edge, 1 at the fringe's 
 uniform mat4 uViewProj;
 #include "vertex_lighting.glsl"
 
-out vec3 vFrontDiffuse;
-out vec3 vFrontSpecular;
-out vec3 vBackDiffuse;
-out vec3 vBackSpecular;
+out vec4 vLight;
 out vec2 vUV;
 out float vThread;
 out float vAcross;
 
 void main() {
-    vec3 n = normalize(aNormal);
-    vec3 toEye = normalize(uCameraPos - aPosition);
-    lightVertex(n, toEye, vFrontDiffuse, vFrontSpecular);
-    lightVertex(-n, toEye, vBackDiffuse, vBackSpecular);
+    vLight = lightTwoSided(normalize(aNormal), normalize(uCameraPos - aPosition));
     vUV = aUV;
     vThread = aThread;
     vAcross = aAcross;

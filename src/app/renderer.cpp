@@ -27,6 +27,7 @@ std::string Renderer::init() {
         GLuint* target;
         const char *vs, *fs;
     } programs[] = {{&clothProgram_, "cloth.vert.glsl", "cloth.frag.glsl"},
+                    {&clothInspectProgram_, "cloth_inspect.vert.glsl", "cloth_inspect.frag.glsl"},
                     {&litProgram_, "lit.vert.glsl", "lit.frag.glsl"},
                     {&groundProgram_, "ground.vert.glsl", "ground.frag.glsl"},
                     {&linesProgram_, "lines.vert.glsl", "lines.frag.glsl"},
@@ -140,7 +141,7 @@ void Renderer::setTexture(const Image& image) {
 }
 
 void Renderer::shutdown() {
-    for (GLuint p : {clothProgram_, litProgram_, groundProgram_, linesProgram_, fringeProgram_, shadowProgram_})
+    for (GLuint p : {clothProgram_, clothInspectProgram_, litProgram_, groundProgram_, linesProgram_, fringeProgram_, shadowProgram_})
         if (p) glDeleteProgram(p);
     const GLuint buffers[] = {clothUvVbo_, clothDynamicVbo_, clothEbo_,  particleVbo_, structuralEbo_, bendEbo_,
                               pointsEbo_,  groundVbo_,       sphereVbo_, sphereEbo_,   fringeVbo_,     fringeEbo_};
@@ -243,17 +244,24 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
     }
 
     glBindVertexArray(clothVao_);
-    glUseProgram(clothProgram_);
-    setLighting(clothProgram_, o, view);
-    setInt(clothProgram_, "uUseTexture", o.texture ? 1 : 0);
-    setInt(clothProgram_, "uFlat", o.flat ? 1 : 0);
-    setInt(clothProgram_, "uStrainColors", o.strainColors ? 1 : 0);
-    setFloat(clothProgram_, "uStrainMax", world.settings.tear.enabled ? world.settings.tear.threshold : 0.5f);
-    setVec3(clothProgram_, "uFrontTint", o.frontTint);
-    setVec3(clothProgram_, "uBackColor", o.backColor);
+    // The default view interpolates only what it shades with (cloth.*.glsl): llvmpipe sets up every
+    // interpolated float of every triangle. The flat and strain views need the world position and the
+    // strain as well (cloth_inspect.*.glsl).
+    const bool inspect = o.flat || o.strainColors;
+    const GLuint program = inspect ? clothInspectProgram_ : clothProgram_;
+    glUseProgram(program);
+    setLighting(program, o, view);
+    setInt(program, "uUseTexture", o.texture ? 1 : 0);
+    if (inspect) {
+        setInt(program, "uFlat", o.flat ? 1 : 0);
+        setInt(program, "uStrainColors", o.strainColors ? 1 : 0);
+        setFloat(program, "uStrainMax", world.settings.tear.enabled ? world.settings.tear.threshold : 0.5f);
+    }
+    setVec3(program, "uFrontTint", o.frontTint);
+    setVec3(program, "uBackColor", o.backColor);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
-    setInt(clothProgram_, "uTexture", 0);
+    setInt(program, "uTexture", 0);
     // Push the cloth slightly back so overlay lines on it win the depth test.
     const bool overlays = o.structuralSprings || o.bendSprings;
     if (overlays) {

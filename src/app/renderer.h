@@ -42,8 +42,8 @@ private:
     void setLighting(GLuint program, const RenderOptions& o, const View& view);
     void buildSphere();
 
-    GLuint clothProgram_ = 0, litProgram_ = 0, groundProgram_ = 0, linesProgram_ = 0, fringeProgram_ = 0,
-           shadowProgram_ = 0;
+    GLuint clothProgram_ = 0, clothInspectProgram_ = 0, litProgram_ = 0, groundProgram_ = 0, linesProgram_ = 0,
+           fringeProgram_ = 0, shadowProgram_ = 0;
     // cloth
     GLuint clothVao_ = 0, clothUvVbo_ = 0, clothDynamicVbo_ = 0, clothEbo_ = 0;
     GLuint texture_ = 0;
