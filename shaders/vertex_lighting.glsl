@@ -7,12 +7,11 @@ uniform vec3 uCameraPos;
 uniform vec3 uLightDir;   // unit, towards the light
 uniform float uShininess;
 
-vec2 lightTerms(vec3 n, vec3 toEye) {
-    float ndl = max(dot(n, uLightDir), 0.0);
-    vec3 h = normalize(uLightDir + toEye);
-    float s = ndl > 0.0 ? pow(max(dot(n, h), 0.0), uShininess) : 0.0;
-    return vec2(ndl, s);
+// xy: the front (n), zw: the back (-n). The half vector is the same for both sides and only the side
+// facing the light has a diffuse or specular term, so one pow serves both.
+vec4 lightTwoSided(vec3 n, vec3 toEye) {
+    float ndl = dot(n, uLightDir);
+    float ndh = dot(n, normalize(uLightDir + toEye));
+    float s = pow(max(ndl > 0.0 ? ndh : -ndh, 0.0), uShininess);
+    return vec4(max(ndl, 0.0), ndl > 0.0 ? s : 0.0, max(-ndl, 0.0), ndl < 0.0 ? s : 0.0);
 }
-
-// xy: the front (n), zw: the back (-n).
-vec4 lightTwoSided(vec3 n, vec3 toEye) { return vec4(lightTerms(n, toEye), lightTerms(-n, toEye)); }
