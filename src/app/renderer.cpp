@@ -27,7 +27,7 @@ std::string Renderer::init() {
         GLuint* target;
         const char *vs, *fs;
     } programs[] = {{&clothProgram_, "cloth.vert.glsl", "cloth.frag.glsl"},
-                    {&clothInspectProgram_, "cloth_inspect.vert.glsl", "cloth_inspect.frag.glsl"},
+                    {&clothInspectProgram_, "cloth.vert.glsl", "cloth_inspect.frag.glsl"},
                     {&litProgram_, "lit.vert.glsl", "lit.frag.glsl"},
                     {&groundProgram_, "ground.vert.glsl", "ground.frag.glsl"},
                     {&linesProgram_, "lines.vert.glsl", "lines.frag.glsl"},
@@ -246,7 +246,8 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
     glBindVertexArray(clothVao_);
     // The default view interpolates only what it shades with (cloth.*.glsl): llvmpipe sets up every
     // interpolated float of every triangle. The flat and strain views need the world position and the
-    // strain as well (cloth_inspect.*.glsl).
+    // strain as well (cloth_inspect.frag.glsl; the vertex shader is the same, the linker drops what
+    // cloth.frag.glsl does not read).
     const bool inspect = o.flat || o.strainColors;
     const GLuint program = inspect ? clothInspectProgram_ : clothProgram_;
     glUseProgram(program);
