@@ -1,5 +1,6 @@
 #version 330 core
-// Cloth: the fabric (cloth.vert.glsl) times the interpolated Gouraud lighting of the side seen.
+// Cloth, the default view: the fabric (fabric_color.glsl) lit by the Gouraud terms cloth.vert.glsl
+// interpolated, for the side seen (fragment_lighting.glsl).
 in vec4 vLight;
 in vec2 vUV;
 

@@ -7,8 +7,8 @@ uniform vec3 uFrontTint;
 uniform vec3 uBackColor;
 
 vec3 fabricColor(vec2 uv) {
-    // One texture fetch for both sides: llvmpipe runs both arms of a branch on gl_FrontFacing (it
-    // shades 4 x 4 fragments at a time under a mask), so a fetch in each arm cost two.
+    // One texture fetch for both sides: llvmpipe shades a block of fragments at once under a mask and
+    // ran both arms of a branch on gl_FrontFacing, so a fetch in each arm cost two.
     vec3 fabric = uUseTexture ? texture(uTexture, uv).rgb : vec3(1.0);
     if (gl_FrontFacing) return fabric * uFrontTint;
     return uUseTexture ? mix(vec3(dot(fabric, vec3(0.3, 0.55, 0.15))), fabric, 0.8) * uBackColor : uBackColor;

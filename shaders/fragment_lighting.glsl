@@ -1,6 +1,6 @@
 // The colour of a lit fragment from the terms vertex_lighting.glsl interpolated (included by the cloth
-// and fringe fragment shaders): ambient + diffuse times the surface colour, plus white-ish specular,
-// for the side the fragment shows.
+// and fringe fragment shaders): ambient + diffuse times the surface colour, plus the specular term in the
+// light's colour, for the side the fragment shows.
 uniform vec3 uLightColor;
 uniform vec3 uAmbient;
 uniform float uSpecular;
