@@ -10,9 +10,7 @@ in float vStrain;
 uniform bool uFlat;
 uniform bool uStrainColors;
 uniform float uStrainMax;  // strain shown as full red (the tear threshold)
-uniform vec3 uCameraPos;
-uniform vec3 uLightDir;
-uniform float uShininess;
+#include "vertex_lighting.glsl"
 #include "fabric_color.glsl"
 #include "fragment_lighting.glsl"
 
@@ -36,8 +34,5 @@ void main() {
     vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
     vec3 toEye = normalize(uCameraPos - vWorld);
     if (dot(n, toEye) < 0.0) n = -n;
-    float ndl = max(dot(n, uLightDir), 0.0);
-    vec3 h = normalize(uLightDir + toEye);
-    float s = ndl > 0.0 ? pow(max(dot(n, h), 0.0), uShininess) : 0.0;
-    fragColor = vec4(shadeLit(base, vec2(ndl, s)), 1.0);
+    fragColor = vec4(shadeLit(base, lightTwoSided(n, toEye).xy), 1.0);
 }

@@ -1,4 +1,5 @@
-// Gouraud lighting of one vertex, both sides (included by the cloth and fringe vertex shaders): for
+// Gouraud lighting of one vertex, both sides (included by the cloth and fringe vertex shaders, and by
+// cloth_inspect.frag.glsl for flat shading's face normal, front side only): for
 // the normal n and -n, the diffuse term n.l and the Blinn-Phong specular term, seen along toEye.
 // Only these four numbers are interpolated across a triangle; fragment_lighting.glsl turns the side it
 // sees into a colour with the light's colours. Interpolating the colours instead (two vec3 a side)
