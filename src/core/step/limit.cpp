@@ -12,6 +12,13 @@
 // or above its tear threshold (the tear phase's candidates) and the passes skip them. If there are
 // more than tear.max_per_step candidates, only the most strained max_per_step are exempt; the
 // passes limit the others, so a spring is never left unlimited without being torn (that ran away).
+// A tear starts only from a load the limit could not hold (issue 12): a spring that this sub-step's
+// motion alone carried from within the limit past its threshold (its ends' start-of-step positions,
+// x - v dt, within the limit) is limited, not torn, unless a ball touches it, it touches a tear's tip
+// or hinge, or a hand (driver) moves: the exceptions where the limit is not a hard cap. Such a jump
+// is the step's overshoot: the limit, a hard cap, stops the spring at the limit as dt goes to 0.
+// Measured: a 6 m cloth pinned on its side whips through its fold at 19 m/s between neighbours,
+// and one 1.3 ms sub-step took a spring from 0.084 to 0.39 (bench/README.md, "Overshoot is not a load").
 //
 // Order and cost, all in one parallel region (LimitSolve::run):
 //   1. scan     reads every structural spring once (four at a time, kernels.h); most leave after one
@@ -110,20 +117,27 @@ private:
         const uint8_t f = flags_[s.a] | flags_[s.b];
         return (f & kHem) ? ctx_.hemRatio : (f & (kWeak | kHinge)) ? ctx_.weakRatio : ctx_.tearRatio;
     }
+    // Did this sub-step's motion alone carry spring s from within the limit past its threshold (see
+    // the top of this file)? Read only for springs over a threshold: a few per sub-step at most.
+    bool overshotFromWithinLimit(const Spring& s) const {
+        if (!holdsOvershoot_ || underBall(s) || ((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge))) return false;
+        const Vec3 start = (x_[s.b] - v_[s.b] * ctx_.dt) - (x_[s.a] - v_[s.a] * ctx_.dt);
+        return start.squaredNorm() <= sq(s.rest * doneRatio_);
+    }
     // A tear candidate of this sub-step, left to the tear phase. A spring too short to halve is
     // limited even as a candidate: if its tear fails (no weak-point path, too short for a basic
     // tear) it must not stay overstretched.
     bool exempt(const Spring& s, float len2) const {
         if (len2 < sq(s.rest * minTearRatio_) || s.rest < minTearSplitRest_) return false;
         return len2 >= sq(s.rest * tearRatioOf(s)) &&
-               std::sqrt(len2) / s.rest - 1.f >= exemptStrain_ && !heldAsFlap(s);
+               std::sqrt(len2) / s.rest - 1.f >= exemptStrain_ && !heldByLimit(s);
     }
-    // A flap's spoke over its threshold (the scan's flapHeld lists: a few springs at most) is
-    // limited: no one-point split would set the flap loose.
-    bool heldAsFlap(const Spring& s) const {
-        if (!((flags_[s.a] | flags_[s.b]) & kHinge)) return false;
+    // A spring over its threshold that the scan kept off the candidates (its held lists: a few
+    // springs at most) is limited: a flap's spoke (no one-point split would set the flap loose) or
+    // a one-step overshoot (overshotFromWithinLimit).
+    bool heldByLimit(const Spring& s) const {
         const Index i = Index(&s - springs_);
-        for (const std::vector<Index>& held : T_.flapHeld)
+        for (const std::vector<Index>& held : T_.held)
             if (std::find(held.begin(), held.end(), i) != held.end()) return true;
         return false;
     }
@@ -156,6 +170,7 @@ private:
     const float doneRatio_, heldDoneRatio_, minTearRatio_, minTearSplitRest_;
     const bool useTethers_;
     const bool gaussSeidel_;
+    const bool holdsOvershoot_; // the limit holds a spring's one-step overshoot (no driver moves)
     const uint32_t stamp0_;
     Vec3* x_;
     Vec3* v_;
@@ -177,6 +192,7 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       minTearSplitRest_(minTearSplitRest(cloth)),
       useTethers_(ctx.limiting),
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
+      holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
@@ -198,8 +214,8 @@ void LimitSolve::scan(int t, int nt) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
         if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
-            if (((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i)))
-                T_.flapHeld[t].push_back(Index(i));
+            if ((((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i))) || overshotFromWithinLimit(s))
+                T_.held[t].push_back(Index(i));
             else
                 found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
         }
@@ -455,12 +471,12 @@ void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
     T.moved.resize(threads);
     T.touched.resize(threads);
     T.found.resize(threads);
-    T.flapHeld.resize(threads);
+    T.held.resize(threads);
     for (int t = 0; t < threads; ++t) {
         T.active[t].clear();
         T.moved[t].clear();
         T.found[t].clear();
-        T.flapHeld[t].clear();
+        T.held[t].clear();
     }
 }
 

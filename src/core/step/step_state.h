@@ -150,8 +150,9 @@ struct ThreadBuffers {
     std::vector<std::vector<Index>> touched;        // particles with a correction this pass
     std::vector<std::vector<Index>> moved;          // particles the last Jacobi pass moved
     std::vector<std::vector<TearCandidate>> found;  // tear candidates of the scan
-    std::vector<std::vector<Index>> flapHeld;       // springs over a tear threshold the scan kept off
+    std::vector<std::vector<Index>> held;           // springs over a tear threshold the scan kept off
                                                     // the candidates: a flap's spokes (isFlapSpoke)
+                                                    // and one-step overshoots (limit.cpp)
 };
 
 struct StepState {
