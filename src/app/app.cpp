@@ -308,6 +308,7 @@ void App::frame(bool last) {
     const double swapEnd = glfwGetTime();
     state_.stats.drawMs = 0.9 * state_.stats.drawMs + 0.1 * 1000.0 * (drawEnd - drawStart);
     state_.stats.swapMs = 0.9 * state_.stats.swapMs + 0.1 * 1000.0 * (swapEnd - drawEnd);
+    state_.stats.clothTrianglesDrawn = renderer_.clothTriangles();
     input_.endFrame();
     updateStats(now);
     state_.frame++;
@@ -457,6 +458,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"script_events", script_.events.size()},
         {"topology_uploads", renderer_.topologyUploads()},
         {"torn_edges", renderer_.tornEdges()}, // drawn with loose threads (render_mesh.h findTornEdges)
+        {"cloth_triangles_drawn", renderer_.clothTriangles()}, // last frame; fewer from far (render_lod.h)
         {"dynamic_uploads", renderer_.dynamicUploads()}, // frames whose positions and normals were uploaded
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},

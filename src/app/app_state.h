@@ -52,6 +52,7 @@ struct Stats {
     std::array<double, int(Phase::Count)> phaseMs{}; // ms per step in each phase
     double drawMs = 0;       // CPU ms to issue the frame's GL and ImGui draws (smoothed)
     double swapMs = 0;       // ms in glfwSwapBuffers (with a software renderer: most of the raster work)
+    size_t clothTrianglesDrawn = 0; // last frame: fewer than the cloth's when seen from far (render_lod.h)
     double limitCappedShare = 0; // share of sub-steps whose length limit ran out of passes (0..1)
     // bookkeeping for the averages
     double sampleStart = -1; // s (glfwGetTime)

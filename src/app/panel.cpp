@@ -366,7 +366,14 @@ void drawStatsPane(AppState& st, const World& world) {
     for (uint8_t f : c.flags) pinned += (f & kPinned) != 0, weak += (f & kWeak) != 0;
     ImGui::Text("particles %zu (pinned %zu, weak %zu)", c.particleCount(), pinned, weak);
     ImGui::Text("springs %zu + bend-shear %zu", c.springs.size(), c.bends.size());
-    ImGui::Text("triangles %zu", c.triangles.size());
+    if (s.clothTrianglesDrawn > 0 && s.clothTrianglesDrawn < c.triangles.size())
+        ImGui::Text("triangles %zu (%zu drawn)", c.triangles.size(), s.clothTrianglesDrawn);
+    else
+        ImGui::Text("triangles %zu", c.triangles.size());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("From far, where a grid cell spans under 3 pixels, every intact block of 2 x 2 cells\n"
+                          "is drawn as two triangles (torn blocks as they are): the same image at about\n"
+                          "a quarter of the triangles. Zoom in to draw every triangle.");
     ImGui::Text("tears: basic %llu  weak %llu  one-point %llu", (unsigned long long)world.tearLog.counts[0],
                 (unsigned long long)world.tearLog.counts[1], (unsigned long long)world.tearLog.counts[2]);
     PiecesSummary& ps = st.pieces;

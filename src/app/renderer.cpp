@@ -218,9 +218,13 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
         mesh_.rebuild(cloth);
         glBindBuffer(GL_ARRAY_BUFFER, clothUvVbo_);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh_.uv.size() * sizeof(float)), mesh_.uv.data(), GL_STATIC_DRAW);
+        coarse_ = coarseGridIndices(cloth, mesh_);
+        spacing_ = meanSpringRest(cloth);
+        const size_t fineBytes = mesh_.indices.size() * sizeof(uint32_t), coarseBytes = coarse_.size() * sizeof(uint32_t);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh_.indices.size() * sizeof(uint32_t)),
-                     mesh_.indices.data(), GL_STATIC_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(fineBytes + coarseBytes), nullptr, GL_STATIC_DRAW);
+        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(fineBytes), mesh_.indices.data());
+        if (coarseBytes > 0) glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(fineBytes), GLsizeiptr(coarseBytes), coarse_.data());
         ++topologyUploads_;
     }
     if (const DrawnState now = drawnState(world, o.strainColors); now != drawn_) {
@@ -235,6 +239,20 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(dynamic_.size() * sizeof(float)), dynamic_.data(), GL_STREAM_DRAW);
     }
 
+    // From far, a grid cloth's intact blocks of 2 x 2 cells are drawn as two triangles (render_lod.h):
+    // when a cell at the cloth's nearest point spans under kCoarseBelowPixels. The flat and strain
+    // views always show every triangle.
+    const bool inspect = o.flat || o.strainColors;
+    bool coarse = false;
+    if (!coarse_.empty() && !inspect) {
+        const Vec3 eye = view.camera.position();
+        float nearest2 = std::numeric_limits<float>::infinity();
+        for (const Vec3& x : cloth.x) nearest2 = std::min(nearest2, (x - eye).squaredNorm());
+        coarse = spacing_ * pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY, view.height) < kCoarseBelowPixels;
+    }
+    drawCount_ = coarse ? coarse_.size() : mesh_.indices.size();
+    drawOffset_ = coarse ? mesh_.indices.size() * sizeof(uint32_t) : 0;
+
     // A contact shadow: when the whole cloth is over 1 m above the ground it would be invisible
     // (darkness 0.01), and at 256 x 256 the pass cost llvmpipe about twice the frame's raster work: skip it.
     if (world.settings.collision.ground && o.groundShadow) {
@@ -248,7 +266,6 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
     // interpolated float of every triangle. The flat and strain views need the world position and the
     // strain as well (cloth_inspect.frag.glsl; the vertex shader is the same, the linker drops what
     // cloth.frag.glsl does not read).
-    const bool inspect = o.flat || o.strainColors;
     const GLuint program = inspect ? clothInspectProgram_ : clothProgram_;
     glUseProgram(program);
     setLighting(program, o, view);
@@ -269,7 +286,7 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.f, 1.f);
     }
-    glDrawElements(GL_TRIANGLES, GLsizei(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, reinterpret_cast<const void*>(drawOffset_));
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
@@ -288,7 +305,7 @@ void Renderer::drawShadow(const World& world, const RenderOptions& o, const View
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendEquation(GL_MIN);
-    glDrawElements(GL_TRIANGLES, GLsizei(mesh_.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, reinterpret_cast<const void*>(drawOffset_));
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

@@ -5,6 +5,7 @@
 #pragma once
 #include "app_state.h"
 #include "fabric_texture.h"
+#include "render_lod.h"
 #include "render_mesh.h"
 
 #include <GL/glew.h>
@@ -25,6 +26,7 @@ public:
     size_t topologyUploads() const { return topologyUploads_; }
     size_t tornEdges() const { return fringe_.edges.size(); } // drawn with a fringe (last topology seen)
     size_t dynamicUploads() const { return dynamicUploads_; } // frames whose positions and normals were uploaded
+    size_t clothTriangles() const { return drawCount_ / 3; } // the cloth's triangles in the last frame (render_lod.h)
     // The cloth was replaced by a restored state whose topology revision may equal the one drawn
     // (an undo): upload the topology again on the next draw.
     void invalidateTopology() {
@@ -48,6 +50,11 @@ private:
     GLuint clothVao_ = 0, clothUvVbo_ = 0, clothDynamicVbo_ = 0, clothEbo_ = 0;
     GLuint texture_ = 0;
     RenderMesh mesh_;
+    // The element buffer holds mesh_.indices, then the coarse indices of a grid cloth seen from far
+    // (render_lod.h); a frame draws drawCount_ indices from drawOffset_ (bytes).
+    std::vector<uint32_t> coarse_;
+    float spacing_ = 0.f; // m, meanSpringRest
+    size_t drawCount_ = 0, drawOffset_ = 0;
     std::vector<Vec3> normals_;
     std::vector<float> strain_;
     std::vector<float> dynamic_;
