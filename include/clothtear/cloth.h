@@ -120,6 +120,8 @@ constexpr double kMinSplitFraction = 0.125;
 // sideways at 80 left a 0.0004 m^2 scrap that way). A shorter spring over its threshold is held
 // by the limit like any other and the tear goes on through its weak points.
 constexpr double kMinTearSplitFraction = 0.7;
+// The mean structural rest length of the mesh as built (m): tears and cuts do not change it.
+inline double meanRestLength(const Cloth& c) { return c.minSplitRest / kMinSplitFraction; }
 inline float minTearSplitRest(const Cloth& c) { return c.minSplitRest * float(kMinTearSplitFraction / kMinSplitFraction); }
 // No confetti (issue 13): a one-point split never sets loose a piece of less rest area than this
 // many squared mean rest lengths; the piece stays on as a flap. On a grid of spacing h a rest
@@ -131,7 +133,7 @@ constexpr double kMinLooseAreaFraction = 1.5;
 constexpr size_t kMinLooseMeshTriangles = 64;
 inline double minLooseArea(const Cloth& c) {
     if (c.triangles.size() < kMinLooseMeshTriangles) return 0.0;
-    const double meanRest = c.minSplitRest / kMinSplitFraction;
+    const double meanRest = meanRestLength(c);
     return kMinLooseAreaFraction * meanRest * meanRest;
 }
 

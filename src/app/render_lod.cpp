@@ -140,12 +140,6 @@ std::vector<uint32_t> coarseGridIndices(const Cloth& cloth, const RenderMesh& me
     return out;
 }
 
-float meanSpringRest(const Cloth& cloth) {
-    double sum = 0;
-    for (const Spring& s : cloth.springs) sum += double(s.rest);
-    return cloth.springs.empty() ? 0.f : float(sum / double(cloth.springs.size()));
-}
-
 float pixelsPerMetre(float distance, float fovY, float heightPixels) {
     return heightPixels / (2.f * std::tan(0.5f * fovY) * std::max(distance, 1e-6f));
 }

@@ -36,9 +36,6 @@ std::vector<uint32_t> coarseGridIndices(const Cloth& cloth, const RenderMesh& me
 // pixels) it is drawn fine.
 inline constexpr float kCoarseBelowPixels = 3.f;
 
-// Mean rest length of the structural springs (m): the mesh spacing a cell spans.
-float meanSpringRest(const Cloth& cloth);
-
 // Pixels that one metre spans, seen face on at `distance` m from the eye, in a window `heightPixels`
 // tall with vertical field of view `fovY` (rad).
 float pixelsPerMetre(float distance, float fovY, float heightPixels);

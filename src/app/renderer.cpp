@@ -219,7 +219,6 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
         glBindBuffer(GL_ARRAY_BUFFER, clothUvVbo_);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh_.uv.size() * sizeof(float)), mesh_.uv.data(), GL_STATIC_DRAW);
         coarse_ = coarseGridIndices(cloth, mesh_);
-        spacing_ = meanSpringRest(cloth);
         const size_t fineBytes = mesh_.indices.size() * sizeof(uint32_t), coarseBytes = coarse_.size() * sizeof(uint32_t);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
         glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(fineBytes + coarseBytes), nullptr, GL_STATIC_DRAW);
@@ -239,27 +238,27 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(dynamic_.size() * sizeof(float)), dynamic_.data(), GL_STREAM_DRAW);
     }
 
-    // From far, a grid cloth's intact blocks of 2 x 2 cells are drawn as two triangles (render_lod.h):
-    // when a cell at the cloth's nearest point spans under kCoarseBelowPixels. The flat and strain
-    // views always show every triangle.
+    // One pass over the positions for two choices. From far, a grid cloth's intact blocks of 2 x 2
+    // cells are drawn as two triangles (render_lod.h): when a cell (the mesh's mean rest length) at the
+    // cloth's nearest point to the eye spans under kCoarseBelowPixels; the flat and strain views always
+    // show every triangle. The contact shadow: when the cloth's lowest point is over 1 m above the
+    // ground it would be invisible (darkness 0.01), and at 256 x 256 the pass cost llvmpipe about twice
+    // the frame's raster work: skip it.
     const bool inspect = o.flat || o.strainColors;
-    bool coarse = false;
-    if (!coarse_.empty() && !inspect) {
+    const bool mayCoarsen = !coarse_.empty() && !inspect, mayShadow = world.settings.collision.ground && o.groundShadow;
+    float lowest = std::numeric_limits<float>::infinity(), nearest2 = std::numeric_limits<float>::infinity();
+    if (mayCoarsen || mayShadow) {
         const Vec3 eye = view.camera.position();
-        float nearest2 = std::numeric_limits<float>::infinity();
-        for (const Vec3& x : cloth.x) nearest2 = std::min(nearest2, (x - eye).squaredNorm());
-        coarse = spacing_ * pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY, view.height) < kCoarseBelowPixels;
+        for (const Vec3& x : cloth.x) {
+            lowest = std::min(lowest, x.y());
+            nearest2 = std::min(nearest2, (x - eye).squaredNorm());
+        }
     }
+    const bool coarse = mayCoarsen && float(meanRestLength(cloth)) * pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY,
+                                                                                    view.height) < kCoarseBelowPixels;
     drawCount_ = coarse ? coarse_.size() : mesh_.indices.size();
     drawOffset_ = coarse ? mesh_.indices.size() * sizeof(uint32_t) : 0;
-
-    // A contact shadow: when the whole cloth is over 1 m above the ground it would be invisible
-    // (darkness 0.01), and at 256 x 256 the pass cost llvmpipe about twice the frame's raster work: skip it.
-    if (world.settings.collision.ground && o.groundShadow) {
-        float lowest = std::numeric_limits<float>::infinity();
-        for (const Vec3& x : cloth.x) lowest = std::min(lowest, x.y());
-        if (lowest - world.settings.collision.groundHeight < kShadowReach) drawShadow(world, o, view);
-    }
+    if (mayShadow && lowest - world.settings.collision.groundHeight < kShadowReach) drawShadow(world, o, view);
 
     glBindVertexArray(clothVao_);
     // The default view interpolates only what it shades with (cloth.*.glsl): llvmpipe sets up every

@@ -53,7 +53,6 @@ private:
     // The element buffer holds mesh_.indices, then the coarse indices of a grid cloth seen from far
     // (render_lod.h); a frame draws drawCount_ indices from drawOffset_ (bytes).
     std::vector<uint32_t> coarse_;
-    float spacing_ = 0.f; // m, meanSpringRest
     size_t drawCount_ = 0, drawOffset_ = 0;
     std::vector<Vec3> normals_;
     std::vector<float> strain_;
