@@ -48,6 +48,14 @@
 #include <functional>
 
 namespace clothtear {
+
+// Does a driver move particles (the drag tool, the pull and tension scenes)?
+bool driversMove(const std::vector<Driver>& drivers) {
+    for (const Driver& d : drivers)
+        if (!d.particles.empty() && d.velocity.squaredNorm() > 0.f) return true;
+    return false;
+}
+
 namespace {
 
 // Lists shorter than this are worked by one thread (a barrier costs more than the work).
@@ -68,12 +76,6 @@ void refreshLimitCache(const StepContext& ctx, const Cloth& cloth, LimitCache& C
     C.stamp.set(ctx.revisions);
 }
 
-// Does a driver move particles this sub-step (the drag tool, the pull and tension scenes)?
-bool driversMove(const std::vector<Driver>& drivers) {
-    for (const Driver& d : drivers)
-        if (!d.particles.empty() && d.velocity.squaredNorm() > 0.f) return true;
-    return false;
-}
 
 // Gauss-Seidel: a pass carries a correction along the whole list in the list's direction, but
 // only one spring against it, so a pull from the anchors across a cloth D springs deep can take
