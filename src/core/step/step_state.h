@@ -87,6 +87,9 @@ struct LimitCache {
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
     std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
+    // Per structural spring: a tear candidate of this sub-step's scan, which the passes leave alone
+    // (all 0 between sub-steps).
+    std::vector<uint8_t> candidate;
     uint32_t passStamp = 0;      // last pass stamp used
 };
 
