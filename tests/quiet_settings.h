@@ -27,7 +27,7 @@ inline Settings quietSettings() {
 
 // One oscillator: the world's cloth becomes one triangle with A = (-1, 0) and B = (1, 0) pinned and
 // C = (0, 1) free, C displaced by 1 mm across A-B (w.settings as the test set them). C then swings
-// on the springs AC and BC at omega^2 = k / m_C (k per spring; GuardCapsEachSpringAtAThirdOfItsStableStiffness).
+// on the springs AC and BC at omega^2 = k / m_C (k per spring; GuardKeepsTheMaterialWithinItsBudgetAndCapsEachSpringWhileABallIsNear).
 // Returns rebuild's error ("" when built).
 inline std::string buildOscillator(World& w) {
     MeshData m;

@@ -491,7 +491,7 @@ TEST(Kes, HingeTangentIsTheForcesDerivative) {
 // A = (-1, 0) and B = (1, 0) pinned and C = (0, 1) free (no gravity, air, damping, limit or guard;
 // one triangle has no hinge), C displaced by 1 mm across A-B. A law with a linear term only,
 // T = c1 e, makes each spring k = c1 weight (weight 1/2) and C swing at omega^2 = k / m_C
-// (tests/test_stability.cpp, GuardCapsEachSpringAtAThirdOfItsStableStiffness). Forward Euler
+// (tests/test_stability.cpp, GuardKeepsTheMaterialWithinItsBudgetAndCapsEachSpringWhileABallIsNear). Forward Euler
 // multiplies that mode's amplitude by sqrt(1 - g dt + (omega dt)^2) a step: the undamped method
 // (the linear model with the same k) grows it by sqrt(1 + (omega dt)^2); the law with C = 2 dt K
 // (g = 2 dt omega^2) shrinks it by sqrt(1 - (omega dt)^2). Here omega dt = 0.1: 1.00499 against

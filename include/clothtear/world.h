@@ -76,11 +76,15 @@ private:
 // Infinite for the reference integrators.
 double stableStepEstimate(const Cloth& cloth, const Settings& settings);
 
-// The sub-step the stability guard asks for (World::step): no longer than stableStepEstimate and
-// short enough that no spring needs the guard's per-spring cap, for every particle except those
-// that need a shorter step and together hold at most lightMassFraction of the cloth's mass (a
-// tear's light midpoint particles get capped springs instead of the whole cloth more sub-steps).
-double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction);
+// The sub-step the stability guard asks for (World::step): the step at which every particle's
+// springs are within the guard's budget (Gershgorin, 10 % inside stableStepEstimate's bound, with
+// the air drag's share), for every particle except those that need a shorter step and together
+// hold at most lightMassFraction of the cloth's mass (a tear's light midpoint particles get capped
+// springs instead of the whole cloth more sub-steps). With `interacting` (a ball near the cloth or
+// a hand moving it) or material.model = kes, the guard's conservative step instead: no longer than
+// stableStepEstimate and short enough that no spring needs the guard's per-spring cap.
+double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction,
+                         bool interacting = false);
 // The fraction World::step passes: the lightest 1% of the mass may get capped springs.
 inline constexpr double kGuardLightMass = 0.01;
 

@@ -48,6 +48,14 @@
 #include <functional>
 
 namespace clothtear {
+
+// Does a driver move particles (the drag tool, the pull and tension scenes)?
+bool driversMove(const std::vector<Driver>& drivers) {
+    for (const Driver& d : drivers)
+        if (!d.particles.empty() && d.velocity.squaredNorm() > 0.f) return true;
+    return false;
+}
+
 namespace {
 
 // Lists shorter than this are worked by one thread (a barrier costs more than the work).
@@ -68,12 +76,6 @@ void refreshLimitCache(const StepContext& ctx, const Cloth& cloth, LimitCache& C
     C.stamp.set(ctx.revisions);
 }
 
-// Does a driver move particles this sub-step (the drag tool, the pull and tension scenes)?
-bool driversMove(const std::vector<Driver>& drivers) {
-    for (const Driver& d : drivers)
-        if (!d.particles.empty() && d.velocity.squaredNorm() > 0.f) return true;
-    return false;
-}
 
 // Gauss-Seidel: a pass carries a correction along the whole list in the list's direction, but
 // only one spring against it, so a pull from the anchors across a cloth D springs deep can take
@@ -119,15 +121,26 @@ private:
     }
     // Did this sub-step's motion alone carry spring s from within the limit past its threshold (see
     // the top of this file)? Read only for springs over a threshold: a few per sub-step at most.
+    // The limit is a hard cap here: no hand moves, no ball touches the spring, it touches no tear's
+    // tip or hinge (the exceptions of issue 12 goal 5).
+    bool hardCap(const Spring& s) const {
+        return holdsOvershoot_ && !underBall(s) && !((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge));
+    }
     bool overshotFromWithinLimit(const Spring& s) const {
-        if (!holdsOvershoot_ || underBall(s) || ((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge))) return false;
+        if (!hardCap(s)) return false;
         const Vec3 start = (x_[s.b] - v_[s.b] * ctx_.dt) - (x_[s.a] - v_[s.a] * ctx_.dt);
         return start.squaredNorm() <= sq(s.rest * doneRatio_);
     }
     // A tear candidate of this sub-step, left to the tear phase. A spring too short to halve is
     // limited even as a candidate: if its tear fails (no weak-point path, too short for a basic
-    // tear) it must not stay overstretched.
+    // tear) it must not stay overstretched. Where the limit is a hard cap (hardCap), only the scan's
+    // candidates: a spring the passes push past its threshold is limited like any other. It was
+    // left unlimited and untorn, and the next sub-step tore it from there, past the overshoot rule
+    // (a 2 m cloth pinned left at 65 a side: the passes took a bottom-edge spring from 0.343 to 0.363
+    // and converged around it). Under a moving hand or a ball the hand's or the ball's load that the
+    // passes push onto a spring past its threshold still tears it (the drag and ball outcomes).
     bool exempt(const Spring& s, float len2) const {
+        if (!candidate_[&s - springs_] && hardCap(s)) return false;
         if (len2 < sq(s.rest * minTearRatio_) || s.rest < minTearSplitRest_) return false;
         return len2 >= sq(s.rest * tearRatioOf(s)) &&
                std::sqrt(len2) / s.rest - 1.f >= exemptStrain_ && !heldByLimit(s);
@@ -178,6 +191,7 @@ private:
     const uint8_t* flags_;
     const Spring* springs_;
     uint8_t* listed_;
+    uint8_t* candidate_; // per spring: in found[] this sub-step (exempt from the passes)
     uint32_t* movedIn_;
     float exemptStrain_ = -1.f; // with too many candidates: those below this strain are limited
     size_t listSize_[kMaxThreadSlots] = {};
@@ -196,6 +210,7 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
+      candidate_(ctx.limiting ? state.limit.candidate.data() : nullptr),
       movedIn_(ctx.limiting ? state.limit.moved.data() : nullptr) {
     if (ctx.limiting) C_.passStamp += uint32_t(iterations_) + 1; // the passes', then the tethers' stamp
 }
@@ -216,8 +231,10 @@ void LimitSolve::scan(int t, int nt) {
         if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
             if ((((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i))) || overshotFromWithinLimit(s))
                 T_.held[t].push_back(Index(i));
-            else
+            else {
                 found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
+                if (candidate_) candidate_[i] = 1;
+            }
         }
         if (ctx_.limiting && overLimit(s, len2)) {
             listed_[i] = 1;
@@ -456,6 +473,7 @@ void LimitSolve::run() {
         }
         pullTethers(t, nt, anyFound);
         passes(t, nt);
+        for (const TearCandidate& f : T_.found[t]) candidate_[f.spring] = 0; // passes() ends with a barrier
     });
 }
 

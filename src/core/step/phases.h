@@ -30,6 +30,8 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
 void phaseCollide(const StepContext& ctx, Cloth& cloth, StepState& state);
 // limit.cpp: strain scan (tear candidates), tethers, Provot length limiting.
 void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state);
+// limit.cpp: does a driver move particles (the drag tool, the pull and tension scenes)?
+bool driversMove(const std::vector<Driver>& drivers);
 // collide_phase.cpp: balls give way where the limit held the cloth; the ground.
 void phaseContact(const StepContext& ctx, Cloth& cloth, StepState& state);
 // tear_phase.cpp: tears the candidates of the scan (the only topology change of the step).

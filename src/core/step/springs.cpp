@@ -12,17 +12,17 @@
 namespace clothtear {
 namespace {
 
-// Stability guard, per particle. The caps of refreshSpringCache bound each spring alone; a particle
-// with many capped springs (a sliver mesh, a fan of torn triangles, strong damping) can still add
-// up past the stable region. Gershgorin (stability.cpp): semi-implicit Euler is stable while, for
-// every particle p,
+// Stability guard, per particle. Gershgorin (stability.cpp): semi-implicit Euler is stable while,
+// for every particle p,
 //   dt^2 w_p sum(k) / 2 + dt w_p sum(kd) + dt c_air < 1.
-// Where a particle's springs add up past kParticleBudget, they are scaled down by the factor that
-// brings it back (a spring takes the smaller factor of its two ends, so both ends end within the
-// budget). At the defaults the per-spring caps already keep every particle inside, so this changes
-// nothing there; it is what keeps random safe parameter sets finite (tests/test_stability.cpp).
+// Where a particle's springs add up past kParticleBudget (spring_caps.h), they are scaled down by
+// the factor that brings it back (a spring takes the smaller factor of its two ends, so both ends
+// end within the budget). The guard's sub-step (stability.cpp, guardStepEstimate) puts every
+// particle but the lightest 1 % of the mass inside the budget, so with the linear material only
+// those (a tear's midpoints) and cloths past time.max_substeps are scaled; the kes law's springs
+// are capped one by one first (refreshSpringCache). It is also what keeps random safe parameter
+// sets finite (tests/test_stability.cpp).
 void guardParticleBudget(const Cloth& cloth, SpringCache& S, float dt, float dragPerMass) {
-    constexpr float kParticleBudget = 0.9f;
     const size_t n = cloth.particleCount(), count = S.a16.size();
     std::vector<float> load(n, 0.f);
     for (size_t e = 0; e < count; ++e) {
@@ -73,7 +73,7 @@ void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state) {
 // order, 3.3 interleaved). Blocks stay in mesh order, so a thread's chunk still touches a band.
 void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state) {
     SpringCache& S = state.springs;
-    if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps)) return;
+    if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps) && S.perSpringCaps == ctx.perSpringCaps) return;
     const MaterialSettings& m = ctx.settings->material;
     const bool kes = m.model == MaterialModel::Kes;
     // kes: the structural springs follow the tensile law (kesWidth below) and hinges replace the
@@ -96,7 +96,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
             const size_t i = base + kBlock <= count ? base + (q % kWays) * kLane + q / kWays : e;
             const Spring& s = springs[i];
             float k = ks * s.weight, damping = kds * s.weight;
-            if (guard) {
+            if (ctx.perSpringCaps) {
                 const float w = cloth.invMass[s.a] + cloth.invMass[s.b];
                 if (k * w > kCap) k = kCap / w;
                 if (damping * w > kdCap) damping = kdCap / w;
@@ -127,6 +127,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
             if (askedDamping > 0.f) S.dampingKept = std::min(S.dampingKept, S.kd[e] / askedDamping);
         }
     S.kes = kes;
+    S.perSpringCaps = ctx.perSpringCaps;
     S.kesWidth.clear();
     if (kes) {
         S.kesWidth.resize(ns);

@@ -22,6 +22,26 @@ const char* phaseName(Phase p) {
 
 namespace {
 
+// Can a ball touch the cloth this frame? Its centre is within its radius, a mean rest length and
+// the distance it and the cloth's fastest particle close in a frame of the cloth's bounding box.
+bool ballNearCloth(const World& w) {
+    if (w.balls.empty() || w.cloth.particleCount() == 0) return false;
+    Vec3 lo = w.cloth.x[0], hi = lo;
+    float fastest2 = 0.f;
+    for (size_t p = 0; p < w.cloth.particleCount(); ++p) {
+        lo = lo.cwiseMin(w.cloth.x[p]);
+        hi = hi.cwiseMax(w.cloth.x[p]);
+        fastest2 = std::max(fastest2, w.cloth.v[p].squaredNorm());
+    }
+    const float frame = w.settings.time.frameDt, spacing = float(meanRestLength(w.cloth));
+    for (const Ball& b : w.balls) {
+        const float reach = b.radius + spacing + (b.v.norm() + std::sqrt(fastest2)) * frame;
+        const Vec3 nearest = b.x.cwiseMax(lo).cwiseMin(hi);
+        if (!((b.x - nearest).norm() > reach)) return true; // a non-finite ball counts as near
+    }
+    return false;
+}
+
 // After phase `after` (-1: before the sub-step's first phase, i.e. set from outside the step): the
 // first non-finite value, with the phase, frame and time, into nonFiniteWhere. The force buffers are
 // read after the phases that fill them (springs, wind); the integrator clears them.
@@ -104,6 +124,10 @@ void World::step() {
     }
     wakePiecesIfTouched(*this, state);
     if (settings.sleep.enabled) state.sleep.frameStart = cloth.x;
+    // A ball near the cloth or a hand moving it: the guard's conservative step, springs capped one
+    // by one (stability.cpp). Their tears are made in one sub-step (bench/README.md, "Ball outcomes
+    // against the sub-step") and were measured and are tested at that step.
+    state.interacting = ballNearCloth(*this) || driversMove(drivers);
     frameSubsteps = guardSubsteps();
     state.substepsNow = frameSubsteps;
     for (int i = 0; i < frameSubsteps; ++i) substep();
@@ -134,9 +158,14 @@ int World::guardSubsteps() {
     GuardCache& G = state.guard;
     if (!G.stamp.fresh(now, GuardCache::kDeps)) {
         G.stableStep = guardStepEstimate(cloth, settings, kGuardLightMass);
+        G.capsKnown = false;
         G.stamp.set(now);
     }
-    const double need = std::ceil(double(T.frameDt) / G.stableStep);
+    if (state.interacting && !G.capsKnown) {
+        G.capsStep = guardStepEstimate(cloth, settings, kGuardLightMass, true);
+        G.capsKnown = true;
+    }
+    const double need = std::ceil(double(T.frameDt) / (state.interacting ? G.capsStep : G.stableStep));
     return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need));
 }
 

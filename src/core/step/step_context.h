@@ -41,6 +41,9 @@ struct StepContext {
     bool velocityFix = true; // inelastic limit fix; off for Verlet, whose moves are velocities
 
     // Air, as the explicit integrators apply it.
+    // The stability guard caps springs one by one (spring_caps.h): with the kes law, and with the
+    // linear material while a ball is near or a hand moves (StepState::interacting).
+    bool perSpringCaps = false;
     float dragPerMass = 0; // 1/s, a = -dragPerMass v, capped by the guard (guardDragPerMass)
     float keep = 1;        // Keserica model: velocity kept per sub-step
 

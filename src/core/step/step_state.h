@@ -48,6 +48,7 @@ struct SpringCache {
     // the law's stiffness; k then holds the law's largest tangent (kesStrainRange) x weight, capped.
     std::vector<float> kesWidth;     // m
     bool kes = false;                // built for the kes model (no bend-shear entries)
+    bool perSpringCaps = false;      // built with the per-spring caps (StepContext::perSpringCaps)
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
     // What the stability guard took from the material (World::guardCappedSprings reports it):
@@ -86,6 +87,9 @@ struct LimitCache {
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
     std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
+    // Per structural spring: a tear candidate of this sub-step's scan, which the passes leave alone
+    // (all 0 between sub-steps).
+    std::vector<uint8_t> candidate;
     uint32_t passStamp = 0;      // last pass stamp used
 };
 
@@ -120,7 +124,9 @@ struct WindCache {
 struct GuardCache {
     static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial;
     CacheStamp stamp;
-    double stableStep = 0; // s
+    bool capsKnown = false; // capsStep is computed the first time a frame interacts
+    double stableStep = 0; // s, the guard's step within the particle budget
+    double capsStep = 0;   // s, the step without per-spring caps (while interacting, step.cpp)
 };
 
 // What sleep.cpp remembers of the cloth it put to sleep.
@@ -176,6 +182,9 @@ struct StepState {
     bool verletRunning = false;
     std::vector<Vec3> verletKick;
     int substepsNow = 0; // sub-steps of the frame being stepped (0 outside step(): time.substeps)
+    // This frame a ball is near the cloth or a hand (driver) moves: the guard takes its conservative
+    // step and caps springs one by one (step.cpp, World::guardSubsteps).
+    bool interacting = false;
     SleepState sleep;
 };
 

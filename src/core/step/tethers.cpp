@@ -93,6 +93,7 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     t.moved.assign(n, 0);
     t.passStamp = 0;
     t.listed.assign(cloth.springs.size(), 0);
+    t.candidate.assign(cloth.springs.size(), 0);
     double restSum = 0;
     for (const Spring& s : cloth.springs) restSum += s.rest;
     t.meanRest = cloth.springs.empty() ? 0.f : float(restSum / double(cloth.springs.size()));
