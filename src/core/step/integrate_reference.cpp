@@ -39,8 +39,7 @@ void phaseIntegrateReference(const StepContext& ctx, Cloth& cloth, StepState& st
     // Implicit Euler treats air drag implicitly (stable at any value); XPBD applies it explicitly,
     // capped by the guard like the explicit integrators.
     const float drag = settings.time.integrator == Integrator::Xpbd ? ctx.dragPerMass
-                       : settings.air.model == AirModel::Drag      ? settings.air.dragCoefficient / cloth.density
-                                                                   : 0.f;
+                                                                    : airDragPerMass(settings, cloth.density);
     ReferenceStepInput in{dt,
                           ctx.gravity,
                           drag,

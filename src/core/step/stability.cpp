@@ -17,6 +17,7 @@
 #include "clothtear/kes.h"
 #include "clothtear/world.h"
 #include "spring_caps.h"
+#include "step_context.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,25 +70,28 @@ void springSumsPerParticle(const Cloth& cloth, const Settings& settings, std::ve
 
 namespace {
 
-// Per free particle: the largest stable step (Gershgorin, above) and its mass; for the guard
-// (`guard`), the step it takes for that particle:
-// - within the guard's budget (spring_caps.h, kParticleBudget, with the air drag's share), where
-//   guardParticleBudget (springs.cpp) scales nothing;
-// - with per-spring caps (`caps`: the kes law, or a ball near or a hand moving, step.cpp), the
-//   Gershgorin step no longer than the one at which none of its springs needs a cap: at the
-//   Gershgorin step alone those caps (made for a particle with ~8 springs) softened a 33 x 33
-//   curtain by a third. That step is 1.7 x shorter than the budget's at every resolution (76
-//   instead of 48 sub-steps a frame at 128 x 128); it is kept where the ball and drag outcomes
-//   were measured and are tested (bench/README.md, "The guard's step").
-std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const Settings& settings, bool guard,
-                                                      bool caps) {
+// Which step stepsAndMasses gives each particle.
+enum class StepBound {
+    Stable,     // the largest stable step (Gershgorin, above)
+    Budget,     // the guard's: within its budget (spring_caps.h, kParticleBudget, with the air
+                // drag's share), where guardParticleBudget (springs.cpp) scales nothing
+    SpringCaps, // the guard's with per-spring caps (the kes law, or a ball near or a hand moving,
+                // step.cpp): the Gershgorin step, no longer than the one at which none of the
+                // particle's springs needs a cap
+};
+
+// Per free particle: its step (StepBound) and its mass. At the Gershgorin step alone the per-spring
+// caps (made for a particle with ~8 springs) softened a 33 x 33 curtain by a third, hence their own
+// step; it is 1.5-1.9 x shorter than the budget's (76 instead of 48 sub-steps a frame at 128 x 128)
+// and kept where the ball and drag outcomes were measured and are tested (bench/README.md, "The
+// guard's step from the particle budget").
+std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const Settings& settings, StepBound bound) {
     const MaterialSettings& m = settings.material;
     const size_t n = cloth.particleCount();
     std::vector<double> k, kd;
     springSumsPerParticle(cloth, settings, k, kd);
     std::vector<double> springStep(n, std::numeric_limits<double>::infinity());
-    const bool perSpring = guard && caps;
-    if (perSpring) {
+    if (bound == StepBound::SpringCaps) {
         auto add = [&](const std::vector<Spring>& springs, double ks, double kds) {
             for (const Spring& s : springs) {
                 const double w = double(cloth.invMass[s.a]) + double(cloth.invMass[s.b]);
@@ -102,12 +106,10 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
         add(cloth.springs, ks, kds);
         if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
     }
-    // The guard's budget and the air drag's share of it (step_context.cpp, guardDragPerMass).
-    const bool budgeted = guard && !perSpring;
+    // The guard's budget and the air drag's share of it (guardParticleBudget counts it too).
+    const bool budgeted = bound == StepBound::Budget;
     const double budget = budgeted ? double(kParticleBudget) : 1.0;
-    const double drag = budgeted && settings.air.model == AirModel::Drag && cloth.density > 0.f
-                            ? double(settings.air.dragCoefficient) / double(cloth.density)
-                            : 0.0;
+    const double drag = budgeted ? double(airDragPerMass(settings, cloth.density)) : 0.0;
     std::vector<std::pair<double, double>> out;
     out.reserve(n);
     for (Index p = 0; p < n; ++p) {
@@ -132,7 +134,7 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     double best = std::numeric_limits<double>::infinity();
-    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, false, false))
+    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable))
         best = std::min(best, step);
     return best;
 }
@@ -141,7 +143,8 @@ double guardStepEstimate(const Cloth& cloth, const Settings& settings, double li
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     const bool caps = interacting || settings.material.model == MaterialModel::Kes;
-    std::vector<std::pair<double, double>> steps = stepsAndMasses(cloth, settings, true, caps);
+    std::vector<std::pair<double, double>> steps =
+        stepsAndMasses(cloth, settings, caps ? StepBound::SpringCaps : StepBound::Budget);
     if (steps.empty())
         return std::numeric_limits<double>::infinity();
     // The step every particle meets but the ones that need a shorter one and together hold at most

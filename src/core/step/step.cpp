@@ -144,8 +144,9 @@ void World::step() {
 
 // The stability guard, first part: with an explicit integrator, take enough sub-steps that the
 // material as set is stable (stability.cpp), up to time.max_substeps. Whatever is still too stiff
-// at that step is capped spring by spring in the spring cache (springs.cpp), so the guard never
-// lets a frame explode, and where the budget allows, the cloth keeps its stiffness.
+// at that step is scaled in the spring cache (springs.cpp: per particle into the Gershgorin budget,
+// and spring by spring while a ball is near or a hand moves), so the guard never lets a frame
+// explode, and where the budget allows, the cloth keeps its stiffness.
 // The step is chosen for all but the lightest kGuardLightMass of the cloth's mass: tearing halves
 // triangles, and a torn cloth's small midpoint particles would otherwise multiply the sub-steps
 // of the whole cloth (a 2 m cloth at 65 x 65 went from 20 to 200 per frame after 11 tears); their

@@ -12,8 +12,12 @@ int threadsFor(size_t particles) { return particles >= 2048 ? std::min(maxThread
 
 bool windBlows(const Settings& s) { return s.wind.enabled && s.wind.speed > 0.f && s.wind.dragCoefficient > 0.f; }
 
+float airDragPerMass(const Settings& settings, float density) {
+    return settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / density : 0.f;
+}
+
 float guardDragPerMass(const Settings& settings, float density, float dt) {
-    const float c = settings.air.model == AirModel::Drag ? settings.air.dragCoefficient / density : 0.f;
+    const float c = airDragPerMass(settings, density);
     return settings.time.stabilityGuard ? std::min(c, 0.5f / dt) : c;
 }
 

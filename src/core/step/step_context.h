@@ -62,6 +62,10 @@ bool windBlows(const Settings& settings);
 // Threads worth using for a cloth of n particles (forking costs a few microseconds).
 int threadsFor(size_t particles);
 
+// Air drag per unit mass, 1/s (a = -airDragPerMass v): air.drag_coefficient / density with the
+// physical model, 0 with Keserica's (a factor on v instead).
+float airDragPerMass(const Settings& settings, float density);
+
 // Air drag of the explicit integrators: with the guard on, capped at 0.5 / dt (explicit drag
 // v -= c/rho v dt overshoots past zero velocity beyond 1 / dt and explodes beyond 2 / dt; a light
 // cloth in the safe ranges reaches c/rho = 500 1/s).
