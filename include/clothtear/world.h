@@ -35,6 +35,11 @@ struct StepProfile {
     uint64_t limitCapped = 0;
     uint64_t limitCappedSprings = 0;
     uint64_t limitPasses = 0; // passes of the length limit run, summed over sub-steps
+    // Springs (structural and bend-shear) of the last spring phase that ran in groups of eight
+    // evenly spaced ones (src/core/step/spring_groups.h), and their kernel ("avx2", "sse2" or
+    // "generic": none grouped).
+    uint64_t groupedSprings = 0;
+    const char* springKernel = "generic";
     void reset() { *this = StepProfile{}; }
 };
 

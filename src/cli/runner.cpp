@@ -108,6 +108,8 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"limit_capped_springs", w.profile.limitCappedSprings},
         {"substeps_run", w.profile.substeps},
         {"limit_passes", w.profile.limitPasses}, // passes of the length limit, summed over sub-steps
+        {"spring_kernel", w.profile.springKernel}, // the spring groups' kernel (avx2, sse2, generic)
+        {"grouped_springs", w.profile.groupedSprings}, // springs it ran in the last spring phase
         {"tears", tears},
         {"tears_total", w.tearLog.total()}, // every event, the knife's cut springs included ("tears" by mode)
         {"knife", {{"cuts", w.tearLog.knifeCuts}, {"springs", w.tearLog.counts[int(TearMode::Knife)]}}},

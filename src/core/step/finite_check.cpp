@@ -15,8 +15,7 @@ template <class V> std::string describe(const char* what, size_t index, const ch
 
 } // namespace
 
-std::string findNonFinite(const Cloth& c, const std::vector<Ball>& balls,
-                          const std::vector<std::vector<Eigen::Vector4f>>* forces) {
+std::string findNonFinite(const Cloth& c, const std::vector<Ball>& balls, const ThreadBuffers* forces) {
     for (size_t p = 0; p < c.x.size(); ++p) {
         if (!c.x[p].allFinite())
             return describe("particle", p, "position", c.x[p]);
@@ -33,13 +32,26 @@ std::string findNonFinite(const Cloth& c, const std::vector<Ball>& balls,
         // The lowest particle over all buffers: a particle's force is the sum of its buffers.
         size_t first = c.x.size();
         Eigen::Vector4f value = Eigen::Vector4f::Zero();
-        for (const auto& buffer : *forces)
+        for (const auto& buffer : forces->acc)
             for (size_t p = 0; p < std::min(first, buffer.size()); ++p)
                 if (!buffer[p].head<3>().allFinite()) {
                     first = p;
                     value = buffer[p];
                     break;
                 }
+        // The groups' sums on first and on second ends (spring_groups.h), xyz each.
+        if (forces->groupForcesSet)
+            for (const ComponentArrays& g : forces->groupForces)
+                for (size_t p = 0; p < std::min(first, c.x.size()); ++p)
+                    for (int end = 0; end < 2; ++end) {
+                        const Eigen::Vector4f f(g.component(3 * end)[p], g.component(3 * end + 1)[p],
+                                                g.component(3 * end + 2)[p], 0.f);
+                        if (!f.allFinite()) {
+                            first = p;
+                            value = f;
+                            break;
+                        }
+                    }
         if (first < c.x.size())
             return describe("particle", first, "force", value);
     }

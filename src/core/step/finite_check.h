@@ -3,6 +3,7 @@
 // that made it instead of being found a frame later somewhere in the cloth.
 #pragma once
 #include "clothtear/world.h"
+#include "step_state.h"
 
 #include <string>
 #include <vector>
@@ -10,9 +11,9 @@
 namespace clothtear {
 
 // The first non-finite value of the cloth's positions and velocities, the balls and (when given)
-// the per-thread force buffers of the spring and wind phases: "" when all are finite, else e.g.
-// "particle 41: velocity (nan, 0, 0)" or "force on particle 7 (inf, 0, 0)".
-std::string findNonFinite(const Cloth& cloth, const std::vector<Ball>& balls,
-                          const std::vector<std::vector<Eigen::Vector4f>>* forces);
+// the per-thread force buffers of the spring and wind phases (with the spring groups' arrays when
+// the spring phase wrote them): "" when all are finite, else e.g. "particle 41: velocity (nan, 0,
+// 0)" or "particle 7: force (inf, 0, 0)".
+std::string findNonFinite(const Cloth& cloth, const std::vector<Ball>& balls, const ThreadBuffers* forces);
 
 } // namespace clothtear

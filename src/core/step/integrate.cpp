@@ -4,6 +4,9 @@
 #include "phases.h"
 
 #include <algorithm>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace clothtear {
 
@@ -32,12 +35,27 @@ struct IntegrateParams {
     float dt;
 };
 
-// Particles [b, e), whose forces are in the NB buffers `buf` (NB < 0: nb of them): sums and clears
-// those entries, then integrates. The packed copy holds x and v as phaseSprings read them (nothing
-// moves a particle in between) and gets the new ones (the strain scan and the tethers read them).
-template <Integrator I, int NB>
-void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, const IntegrateParams& P, Vec3* x,
-                    Vec3* v, PackedParticle* packed, const float* invMass) {
+// (x, y, z, 0). Eigen's constructor from four scalars went through the stack here, and the 16-byte
+// load of what three smaller stores had just written could not be forwarded (the integrator at 8 x
+// its cost).
+inline Eigen::Vector4f vector4(float x, float y, float z) {
+#if defined(__SSE2__)
+    Eigen::Vector4f r;
+    _mm_store_ps(r.data(), _mm_setr_ps(x, y, z, 0.f));
+    return r;
+#else
+    return Eigen::Vector4f(x, y, z, 0.f);
+#endif
+}
+
+// Particles [b, e), whose forces are in the NB buffers `buf` (NB < 0: nb of them) and, with G, in
+// the spring groups' arrays of the same threads (`groups`: six arrays `stride` floats apart, first
+// ends then second ends; spring_groups.h): sums and clears those entries, then integrates. The
+// packed copy holds x and v as phaseSprings read them (nothing moves a particle in between) and gets
+// the new ones (the strain scan and the tethers read them).
+template <Integrator I, int NB, bool G>
+void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, float* const* groups, size_t stride, int nb,
+                    const IntegrateParams& P, Vec3* x, Vec3* v, PackedParticle* packed, const float* invMass) {
     using V4 = Eigen::Vector4f;
     const V4 g(P.g.x(), P.g.y(), P.g.z(), 0.f);
     const int count = NB >= 0 ? NB : nb;
@@ -46,6 +64,12 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, con
         for (int k = 0; k < count; ++k) {
             f += buf[k][p];
             buf[k][p].setZero();
+            if constexpr (G) {
+                float* g = groups[k] + p;
+                f += vector4(g[0], g[stride], g[2 * stride]);
+                f += vector4(g[3 * stride], g[4 * stride], g[5 * stride]);
+                for (int c = 0; c < 6; ++c) g[c * stride] = 0.f;
+            }
         }
         const float w = invMass[p];
         if (w == 0.f) continue;
@@ -85,8 +109,11 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, int nb, con
 // One chunk of particles, split where the set of force buffers that cover it changes.
 template <Integrator I>
 void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, PackedParticle* packed,
-                         const float* invMass, std::vector<std::vector<Eigen::Vector4f>>& acc,
-                         const std::array<size_t, 2>* ranges) {
+                         const float* invMass, ThreadBuffers& T) {
+    auto& acc = T.acc;
+    const auto* ranges = T.range.data();
+    const bool G = T.groupForcesSet;
+    const size_t stride = G ? T.groupForces[0].stride : 0;
     std::vector<size_t> cuts{c.begin, c.end};
     for (size_t k = 0; k < acc.size(); ++k)
         for (size_t edge : ranges[k])
@@ -96,14 +123,23 @@ void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Packed
         const size_t b = cuts[s], e = cuts[s + 1];
         if (b == e) continue;
         Eigen::Vector4f* buf[kMaxThreadSlots];
+        float* groups[kMaxThreadSlots];
         int nb = 0;
         for (size_t k = 0; k < acc.size(); ++k)
-            if (ranges[k][0] <= b && ranges[k][1] >= e) buf[nb++] = acc[k].data();
-        switch (nb) {
-        case 0: integrateRange<I, 0>(b, e, buf, nb, P, x, v, packed, invMass); break;
-        case 1: integrateRange<I, 1>(b, e, buf, nb, P, x, v, packed, invMass); break;
-        case 2: integrateRange<I, 2>(b, e, buf, nb, P, x, v, packed, invMass); break;
-        default: integrateRange<I, -1>(b, e, buf, nb, P, x, v, packed, invMass); break;
+            if (ranges[k][0] <= b && ranges[k][1] >= e) {
+                groups[nb] = G ? T.groupForces[k].data.data() : nullptr;
+                buf[nb++] = acc[k].data();
+            }
+        auto run = [&]<int NB, bool WithGroups>() {
+            integrateRange<I, NB, WithGroups>(b, e, buf, groups, stride, nb, P, x, v, packed, invMass);
+        };
+        switch (nb * 2 + G) {
+        case 0: case 1: run.template operator()<0, false>(); break;
+        case 2: run.template operator()<1, false>(); break;
+        case 3: run.template operator()<1, true>(); break;
+        case 4: run.template operator()<2, false>(); break;
+        case 5: run.template operator()<2, true>(); break;
+        default: G ? run.template operator()<-1, true>() : run.template operator()<-1, false>(); break;
         }
     }
 }
@@ -134,23 +170,23 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
     Vec3* v = cloth.v.data();
     const float* invMass = cloth.invMass.data();
     PackedParticle* packed = state.packed.data();
-    auto& acc = state.threads.acc;
-    const auto* ranges = state.threads.range.data();
+    ThreadBuffers& T = state.threads;
     parallelRegion(n, threads, [&](int t, int nt) {
         const Chunk c = chunkOf(n, t, nt);
         switch (ctx.integrator) {
         case Integrator::SemiImplicitEuler:
-            integrateKernel<Integrator::SemiImplicitEuler>(c, P, x, v, packed, invMass, acc, ranges);
+            integrateKernel<Integrator::SemiImplicitEuler>(c, P, x, v, packed, invMass, T);
             break;
         case Integrator::ForwardEuler:
-            integrateKernel<Integrator::ForwardEuler>(c, P, x, v, packed, invMass, acc, ranges);
+            integrateKernel<Integrator::ForwardEuler>(c, P, x, v, packed, invMass, T);
             break;
         case Integrator::Verlet:
-            integrateKernel<Integrator::Verlet>(c, P, x, v, packed, invMass, acc, ranges);
+            integrateKernel<Integrator::Verlet>(c, P, x, v, packed, invMass, T);
             break;
         default: break; // the references go through phaseIntegrateReference
         }
     });
+    T.groupForcesSet = false;
     moveDrivers(ctx, cloth, state);
 }
 

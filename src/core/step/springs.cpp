@@ -4,6 +4,7 @@
 #include "parallel.h"
 #include "phases.h"
 #include "spring_caps.h"
+#include "spring_groups.h"
 
 #include "clothtear/kes.h"
 
@@ -44,6 +45,39 @@ void guardParticleBudget(const Cloth& cloth, SpringCache& S, float dt, float dra
     }
 }
 
+// The packed copy of particles [b, e) of n, and with `components` their x, y, z, vx, vy, vz arrays.
+void packParticles(size_t b, size_t e, size_t n, const Vec3* x, const Vec3* v, PackedParticle* packed,
+                   float* const* components) {
+    size_t p = b;
+#if defined(__SSE2__)
+    // A 16-byte load from a Vec3 takes the next particle's x too (masked off), so the last particle,
+    // whose load would pass the end of the array, goes through the scalar loop.
+    const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+    const size_t fast = std::min(e, n - 1);
+    for (; p + 4 <= fast; p += 4) {
+        __m128 X[4], V[4];
+        for (int j = 0; j < 4; ++j) {
+            X[j] = _mm_and_ps(xyz, _mm_loadu_ps(x[p + j].data()));
+            V[j] = _mm_and_ps(xyz, _mm_loadu_ps(v[p + j].data()));
+            _mm_store_ps(packed[p + j].x, X[j]);
+            _mm_store_ps(packed[p + j].v, V[j]);
+        }
+        if (!components) continue;
+        _MM_TRANSPOSE4_PS(X[0], X[1], X[2], X[3]);
+        _MM_TRANSPOSE4_PS(V[0], V[1], V[2], V[3]);
+        for (int c = 0; c < 3; ++c) {
+            _mm_storeu_ps(components[c] + p, X[c]);
+            _mm_storeu_ps(components[3 + c] + p, V[c]);
+        }
+    }
+#endif
+    for (; p < e; ++p) {
+        packed[p] = packedOf(x[p], v[p]);
+        if (components)
+            for (int c = 0; c < 3; ++c) components[c][p] = x[p][c], components[3 + c][p] = v[p][c];
+    }
+}
+
 } // namespace
 
 // Gravity and air friction are applied in the integrator, per particle, where the velocity is read
@@ -66,11 +100,10 @@ void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state) {
 // revision: a particle let go by a tool is capped from its first sub-step; one sub-step late, a
 // torn-off sliver of 1e-15 kg went to 1e8 m/s in the soak), the material and dt.
 //
-// Order: within each block of 64 springs, entry 8q + j holds spring 8j + q of the block, so the
-// springs of a SIMD group (4 or 8) come from places 8 springs apart in mesh order. Springs next
-// to each other in mesh order share particles, and a group that adds into the same accumulator
-// several times waits on its own stores (measured with groups of four: 5.2 ns per spring in mesh
-// order, 3.3 interleaved). Blocks stay in mesh order, so a thread's chunk still touches a band.
+// Order (groupSprings, spring_groups.h): per kind, the groups of eight evenly spaced springs by
+// first particle, then the other springs in mesh order, interleaved in blocks of 64 so that a SIMD
+// group of kernels.h does not add into one accumulator several times. Both parts run along the
+// cloth, so a thread's chunk of each touches a band.
 void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state) {
     SpringCache& S = state.springs;
     if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps) && S.perSpringCaps == ctx.perSpringCaps) return;
@@ -87,13 +120,21 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     S.index.resize(ns + nb);
     for (auto* a : {&S.rest, &S.k, &S.kd}) a->resize(ns + nb);
     S.structural = ns;
+    // Groups of eight evenly spaced springs first (spring_groups.h), then the rest of each kind.
+    S.groupKernel = kes ? GroupKernel::None : groupKernelInUse();
+    const bool groups = S.groupKernel != GroupKernel::None;
+    const SpringOrder structuralOrder = groupSprings(cloth.springs, ns, cloth.particleCount(), groups);
+    const SpringOrder bendOrder = groupSprings(cloth.bends, nb, cloth.particleCount(), groups);
+    S.groups = structuralOrder.groups;
+    S.structuralGroups = S.groups.size();
+    for (SpringGroup g : bendOrder.groups) {
+        g.entry += uint32_t(ns);
+        S.groups.push_back(g);
+    }
     const float kCap = kStiffnessCap / (dt * dt), kdCap = kDampingCap / dt;
-    auto fill = [&](const std::vector<Spring>& springs, size_t count, size_t offset, float ks, float kds) {
-        constexpr size_t kBlock = 64, kWays = 8, kLane = kBlock / kWays;
-        for (size_t e = 0; e < count; ++e) {
-            // Entry e of this kind takes spring i (a permutation within full blocks).
-            const size_t base = e - e % kBlock, q = e % kBlock;
-            const size_t i = base + kBlock <= count ? base + (q % kWays) * kLane + q / kWays : e;
+    auto fill = [&](const std::vector<Spring>& springs, const SpringOrder& order, size_t offset, float ks, float kds) {
+        for (size_t e = 0; e < order.order.size(); ++e) {
+            const Index i = order.order[e];
             const Spring& s = springs[i];
             float k = ks * s.weight, damping = kds * s.weight;
             if (ctx.perSpringCaps) {
@@ -101,16 +142,17 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
                 if (k * w > kCap) k = kCap / w;
                 if (damping * w > kdCap) damping = kdCap / w;
             }
-            S.a16[offset + e] = 16u * s.a;
-            S.b16[offset + e] = 16u * s.b;
-            S.index[offset + e] = Index(i);
+            const bool swap = order.swapped[e];
+            S.a16[offset + e] = 16u * (swap ? s.b : s.a);
+            S.b16[offset + e] = 16u * (swap ? s.a : s.b);
+            S.index[offset + e] = i;
             S.rest[offset + e] = s.rest;
             S.k[offset + e] = k;
             S.kd[offset + e] = damping;
         }
     };
-    fill(cloth.springs, ns, 0, float(stretchAsked), float(stretchDampingAsked));
-    fill(cloth.bends, nb, ns, m.bendStiffness, m.bendDamping);
+    fill(cloth.springs, structuralOrder, 0, float(stretchAsked), float(stretchDampingAsked));
+    fill(cloth.bends, bendOrder, ns, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
     // What the guard took from the material, for the report and the stats pane.
     S.cappedSprings = 0;
@@ -167,13 +209,28 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     }
     const size_t n = cloth.particleCount();
     const size_t ns = S.structural, nb = S.a16.size() - S.structural;
+    const size_t gs = S.structuralGroups, gb = S.groups.size() - gs; // groups of each kind
     const int threads = int(state.threads.acc.size());
     const int nt = (threads > 1 && ns + nb >= kParallelWork) ? threads : 1;
-    auto chunks = [&](int t) { return std::array<Chunk, 2>{chunkOf(ns, t, nt), chunkOf(nb, t, nt)}; };
+    // A thread's share of each kind: a chunk of its groups and a chunk of its other springs, as
+    // ranges of groups and of cache entries.
+    struct Share {
+        Chunk groups[2], entries[2];
+    };
+    auto shareOf = [&](int t) {
+        Share s;
+        s.groups[0] = chunkOf(gs, t, nt);
+        s.groups[1] = chunkOf(gb, t, nt);
+        s.groups[1].begin += gs, s.groups[1].end += gs;
+        const Chunk rs = chunkOf(ns - kGroupSize * gs, t, nt), rb = chunkOf(nb - kGroupSize * gb, t, nt);
+        s.entries[0] = {kGroupSize * gs + rs.begin, kGroupSize * gs + rs.end};
+        s.entries[1] = {ns + kGroupSize * gb + rb.begin, ns + kGroupSize * gb + rb.end};
+        return s;
+    };
     if (S.threadRange.size() != size_t(nt)) {
         S.threadRange.assign(nt, {n, 0});
         for (int t = 0; t < nt; ++t) {
-            const auto c = chunks(t);
+            const Share s = shareOf(t);
             size_t lo = n, hi = 0;
             auto widen = [&](size_t b, size_t e) {
                 for (size_t i = b; i < e; ++i) {
@@ -181,8 +238,9 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
                     hi = std::max<size_t>(hi, std::max(S.a16[i], S.b16[i]) / 16 + 1);
                 }
             };
-            widen(c[0].begin, c[0].end);
-            widen(ns + c[1].begin, ns + c[1].end);
+            for (const Chunk& g : s.groups)
+                if (g.end > g.begin) widen(S.groups[g.begin].entry, S.groups[g.end - 1].entry + kGroupSize);
+            for (const Chunk& c : s.entries) widen(c.begin, c.end);
             S.threadRange[t] = {lo, hi};
         }
     }
@@ -191,14 +249,32 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
     PackedParticle* packed = state.packed.data();
+    const bool grouped = !S.groups.empty();
+    ctx.profile->groupedSprings = kGroupSize * S.groups.size();
+    ctx.profile->springKernel = !grouped                                  ? "generic"
+                                  : S.groupKernel == GroupKernel::Avx2 ? "avx2"
+                                                                             : "sse2";
+    float* components[6] = {};
+    if (grouped) {
+        state.components.resize(n);
+        for (int c = 0; c < 6; ++c) components[c] = state.components.component(c);
+        state.threads.groupForces.resize(size_t(nt));
+        for (ComponentArrays& f : state.threads.groupForces) f.resize(n);
+    }
+    state.threads.groupForcesSet = grouped;
     parallelRegion(ns + nb, nt, [&](int t, int nt2) {
         const Chunk pc = chunkOf(n, t, nt2);
-        for (size_t p = pc.begin; p < pc.end; ++p) packed[p] = packedOf(x[p], v[p]);
+        packParticles(pc.begin, pc.end, n, x, v, packed, grouped ? components : nullptr);
         parallelBarrier(nt2);
         Eigen::Vector4f* acc = state.threads.acc[t].data();
-        const auto c = chunks(t);
-        springForces(arrays, c[0].begin, c[0].end, packed, acc);
-        springForces(arrays, ns + c[1].begin, ns + c[1].end, packed, acc);
+        const Share s = shareOf(t);
+        for (int kind = 0; kind < 2; ++kind) {
+            if (grouped)
+                springForcesGrouped(S.groupKernel, S.groups.data(), s.groups[kind].begin, s.groups[kind].end,
+                                    S.rest.data(), S.k.data(), S.kd.data(), state.components,
+                                    state.threads.groupForces[size_t(t)]);
+            springForces(arrays, s.entries[kind].begin, s.entries[kind].end, packed, acc);
+        }
     });
 }
 

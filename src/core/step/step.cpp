@@ -48,7 +48,7 @@ bool ballNearCloth(const World& w) {
 void checkFinite(World& w, const StepState& state, int after) {
     if (!w.finite) return; // the first one is the one to trace
     const bool forces = after == int(Phase::Springs) || after == int(Phase::Wind);
-    const std::string what = findNonFinite(w.cloth, w.balls, forces ? &state.threads.acc : nullptr);
+    const std::string what = findNonFinite(w.cloth, w.balls, forces ? &state.threads : nullptr);
     if (what.empty()) return;
     w.finite = false;
     const std::string where = after < 0 ? std::string("before a sub-step (set from outside the step)")

@@ -6,6 +6,7 @@
 #include "clothtear/tear.h"
 #include "clothtear/world.h"
 #include "revisions.h"
+#include "spring_groups.h"
 
 #include <array>
 #include <memory>
@@ -50,6 +51,11 @@ struct SpringCache {
     bool kes = false;                // built for the kes model (no bend-shear entries)
     bool perSpringCaps = false;      // built with the per-spring caps (StepContext::perSpringCaps)
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
+    // Groups of eight evenly spaced springs (spring_groups.h): each kind's entries begin with its
+    // groups; groups [0, structuralGroups) are structural, the rest bend-shear.
+    std::vector<SpringGroup> groups;
+    size_t structuralGroups = 0;
+    GroupKernel groupKernel = GroupKernel::None;
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
     // What the stability guard took from the material (World::guardCappedSprings reports it):
     // springs whose stiffness or damping it capped, and the smallest fraction of the asked-for
@@ -150,6 +156,10 @@ struct SleepState {
 struct ThreadBuffers {
     std::vector<std::vector<Eigen::Vector4f>> acc;  // force buffers (xyz), zero between sub-steps
     std::vector<std::array<size_t, 2>> range;       // particles [lo, hi) each force buffer may hold
+    // The spring groups' forces (spring_groups.h), per thread, over the same range as acc; zero
+    // between sub-steps. groupForcesSet: the spring phase wrote them this sub-step.
+    std::vector<ComponentArrays> groupForces;
+    bool groupForcesSet = false;
     std::vector<std::vector<Eigen::Vector4f>> corr; // limit corrections (xyz, count), zero between passes
     std::vector<std::vector<Eigen::Vector4f>> corrV; // limit velocity changes (xyz)
     std::vector<std::vector<Index>> active;         // springs the limit still works on
@@ -170,6 +180,7 @@ struct StepState {
     ImplicitCacheSlot implicit;
     ThreadBuffers threads;
     std::vector<PackedParticle> packed;         // per particle: x and v for the spring kernels
+    ComponentArrays components;                 // x and v by component, for the groups' kernel
     std::vector<TearCandidate> tearCandidates;  // springs over their tear threshold, from the scan
     std::vector<BallContact> contacts;          // from the collide phase, for the contact phase
     std::vector<int32_t> contactOf;             // per triangle: its entry in contacts, -1
