@@ -39,19 +39,17 @@ std::string findNonFinite(const Cloth& c, const std::vector<Ball>& balls, const 
                     value = buffer[p];
                     break;
                 }
-        // The groups' sums on first and on second ends (spring_groups.h), xyz each.
+        // The spring groups' sums (spring_groups.h), x, y, z.
         if (forces->groupForcesSet)
             for (const ComponentArrays& g : forces->groupForces)
-                for (size_t p = 0; p < std::min(first, c.x.size()); ++p)
-                    for (int end = 0; end < 2; ++end) {
-                        const Eigen::Vector4f f(g.component(3 * end)[p], g.component(3 * end + 1)[p],
-                                                g.component(3 * end + 2)[p], 0.f);
-                        if (!f.allFinite()) {
-                            first = p;
-                            value = f;
-                            break;
-                        }
+                for (size_t p = 0; p < std::min(first, c.x.size()); ++p) {
+                    const Eigen::Vector4f f(g.component(0)[p], g.component(1)[p], g.component(2)[p], 0.f);
+                    if (!f.allFinite()) {
+                        first = p;
+                        value = f;
+                        break;
                     }
+                }
         if (first < c.x.size())
             return describe("particle", first, "force", value);
     }

@@ -49,8 +49,8 @@ inline Eigen::Vector4f vector4(float x, float y, float z) {
 }
 
 // Particles [b, e), whose forces are in the NB buffers `buf` (NB < 0: nb of them) and, with G, in
-// the spring groups' arrays of the same threads (`groups`: six arrays `stride` floats apart, first
-// ends then second ends; spring_groups.h): sums and clears those entries, then integrates. The
+// the spring groups' arrays of the same threads (`groups`: x, y, z, `stride` floats apart;
+// spring_groups.h): sums and clears those entries, then integrates. The
 // packed copy holds x and v as phaseSprings read them (nothing moves a particle in between) and gets
 // the new ones (the strain scan and the tethers read them).
 template <Integrator I, int NB, bool G>
@@ -67,8 +67,7 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, float* cons
             if constexpr (G) {
                 float* g = groups[k] + p;
                 f += vector4(g[0], g[stride], g[2 * stride]);
-                f += vector4(g[3 * stride], g[4 * stride], g[5 * stride]);
-                for (int c = 0; c < 6; ++c) g[c * stride] = 0.f;
+                g[0] = g[stride] = g[2 * stride] = 0.f;
             }
         }
         const float w = invMass[p];

@@ -15,13 +15,14 @@
 
 namespace clothtear {
 
-void ComponentArrays::resize(size_t particles) {
+void ComponentArrays::resize(size_t particles, int count) {
     // Room for a stride-2 group's last load (16 floats from its first particle), rounded to a
     // 32-byte multiple so that every component starts aligned like the first.
     const size_t want = (particles + 16 + 7) / 8 * 8;
-    if (want == stride) return;
+    if (want == stride && count == components) return;
     stride = want;
-    data.assign(6 * stride, 0.f);
+    components = count;
+    data.assign(size_t(count) * stride, 0.f);
 }
 
 GroupKernel groupKernelInUse() {
@@ -42,11 +43,18 @@ GroupKernel groupKernelInUse() {
 }
 
 SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_t particles, bool makeGroups) {
+    // One array of sums takes both ends of a group. Where the second ends' sixteen floats (eight
+    // of stride 2) overlap the first ends' (distance below 16), the load of the second would read
+    // floats the store of the first had just written, shifted, which the CPU cannot forward: those
+    // groups are allowed only as chains (distance = stride: a grid's horizontal springs), whose
+    // kernel adds each particle's two forces in one (chainNet).
+    auto groupable = [](size_t d, uint32_t s) { return d == s || d >= 2 * kGroupSize; };
     SpringOrder out;
     out.order.reserve(count);
     out.swapped.reserve(count);
     std::vector<uint8_t> grouped(count, 0);
     auto lo = [&](size_t i) { return std::min(springs[i].a, springs[i].b); };
+    std::vector<uint32_t> byDistance, groupFirst; // groups' springs: byDistance[groupFirst[g] + j]
     auto hi = [&](size_t i) { return std::max(springs[i].a, springs[i].b); };
     if (makeGroups && count >= kGroupSize && particles > 1) {
         // Sorted by the distance of the ends' indices, then by the first end (stable counting
@@ -72,8 +80,7 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
                 if (distance(byEnds[k]) == distance(byEnds[k - 1]) && lo(byEnds[k]) == lo(byEnds[k - 1]))
                     copy[byEnds[k]] = std::min<uint32_t>(copy[byEnds[k - 1]] + 1, uint32_t(particles - 1));
         }
-        const std::vector<uint32_t> byDistance =
-            countingSort(countingSort(byFirst, [&](uint32_t i) { return copy[i]; }), distance);
+        byDistance = countingSort(countingSort(byFirst, [&](uint32_t i) { return copy[i]; }), distance);
         std::vector<uint32_t> start(particles + 1, 0); // first entry of each distance in byDistance
         for (uint32_t i : byDistance) ++start[distance(i) + 1];
         for (size_t d = 1; d <= particles; ++d) start[d] += start[d - 1];
@@ -88,6 +95,7 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
                 const uint32_t a0 = lo(byDistance[i]);
                 uint32_t stride = 0;
                 for (uint32_t s : {1u, 2u}) {
+                    if (!groupable(d, s)) continue;
                     bool run = true;
                     for (uint32_t j = 1; j < kGroupSize && run; ++j) run = lo(byDistance[i + j]) == a0 + s * j;
                     if (run) {
@@ -104,56 +112,107 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
                 i += kGroupSize;
             }
         }
-        // By band of first particles (a stable counting sort, so distance order within a band): a
-        // chunk of groups then touches a band of the cloth, and within a band one kind of spring
-        // runs along it before the next. Sorted by first particle alone, groups of four or five
-        // kinds in a row add into the same eight accumulators, each addition waiting on the last
-        // one's store: 2.5 ns per spring, no faster than kernels.h's loop.
-        constexpr unsigned kBandShift = 10;
-        const size_t bands = (particles >> kBandShift) + 2;
-        std::vector<uint32_t> at(bands, 0);
-        for (const Found& f : found) ++at[(f.group.a >> kBandShift) + 1];
-        for (size_t b = 1; b < bands; ++b) at[b] += at[b - 1];
-        std::vector<uint32_t> sorted(found.size());
-        for (size_t g = 0; g < found.size(); ++g) sorted[at[found[g].group.a >> kBandShift]++] = uint32_t(g);
         out.groups.reserve(found.size());
-        for (uint32_t g : sorted) {
-            SpringGroup group = found[g].group;
-            group.entry = uint32_t(out.order.size());
-            out.groups.push_back(group);
-            for (size_t j = 0; j < kGroupSize; ++j) {
-                const Index s = byDistance[found[g].first + j];
-                out.order.push_back(s);
-                out.swapped.push_back(springs[s].a > springs[s].b);
-            }
-        }
+        for (const Found& f : found) out.groups.push_back(f.group);
+        groupFirst.reserve(found.size());
+        for (const Found& f : found) groupFirst.push_back(f.first);
     }
-    // The rest in mesh order, permuted within blocks of 64: entry 8q + j holds spring 8j + q of the
-    // block, so the springs of kernels.h's groups of four come from places 8 springs apart. Springs
-    // next to each other in mesh order share particles, and a group that adds into the same
-    // accumulator several times waits on its own stores (5.2 ns per spring in mesh order, 3.3
-    // interleaved, groups of four).
+    // Bands of 2^kBandShift first particles, in order; in each band its groups, then its other
+    // springs. A thread's chunk of the entries then touches a band of the cloth (the integrator
+    // and the strain scan take the same share of the particles), and within a band the groups of
+    // one distance run along it before the next: sorted by first particle alone, groups of four or
+    // five distances in a row added into the same eight floats, each addition waiting on the last
+    // one's store (2.5 ns per spring, no faster than kernels.h's loop). Without groups, one band
+    // in mesh order: the order the cache had before the groups, to the bit.
     std::vector<Index> rest;
-    rest.reserve(count - out.order.size());
+    rest.reserve(count);
     for (size_t i = 0; i < count; ++i)
         if (!grouped[i]) rest.push_back(Index(i));
-    constexpr size_t kBlock = 64, kWays = 8, kLane = kBlock / kWays;
-    for (size_t e = 0; e < rest.size(); ++e) {
-        const size_t base = e - e % kBlock, q = e % kBlock;
-        const size_t i = base + kBlock <= rest.size() ? base + (q % kWays) * kLane + q / kWays : e;
-        out.order.push_back(rest[i]);
-        out.swapped.push_back(0);
+    const size_t bands = makeGroups ? (particles >> kBandShift) + 1 : 1;
+    auto bandOf = [&](uint32_t first) { return makeGroups ? size_t(first >> kBandShift) : size_t(0); };
+    std::vector<uint32_t> groupAt(bands + 1, 0), restAt(bands + 1, 0);
+    for (const SpringGroup& g : out.groups) ++groupAt[bandOf(g.a) + 1];
+    for (Index i : rest) ++restAt[bandOf(lo(i)) + 1];
+    for (size_t b = 1; b <= bands; ++b) groupAt[b] += groupAt[b - 1], restAt[b] += restAt[b - 1];
+    std::vector<uint32_t> groupOrder(out.groups.size());
+    std::vector<Index> restOrder(rest.size());
+    {
+        std::vector<uint32_t> g(groupAt.begin(), groupAt.end() - 1), r(restAt.begin(), restAt.end() - 1);
+        for (size_t k = 0; k < out.groups.size(); ++k) groupOrder[g[bandOf(out.groups[k].a)]++] = uint32_t(k);
+        for (Index i : rest) restOrder[r[bandOf(lo(i))]++] = i;
     }
+    std::vector<SpringGroup> groups;
+    groups.reserve(out.groups.size());
+    for (size_t b = 0; b < bands; ++b) {
+        SpringBand band;
+        band.groupsBegin = uint32_t(groups.size());
+        for (uint32_t k = groupAt[b]; k < groupAt[b + 1]; ++k) {
+            SpringGroup group = out.groups[groupOrder[k]];
+            group.entry = uint32_t(out.order.size());
+            groups.push_back(group);
+            for (size_t j = 0; j < kGroupSize; ++j) {
+                const Index sp = byDistance[groupFirst[groupOrder[k]] + j];
+                out.order.push_back(sp);
+                out.swapped.push_back(springs[sp].a > springs[sp].b);
+            }
+        }
+        band.groupsEnd = uint32_t(groups.size());
+        // The other springs in mesh order, permuted within blocks of 64: entry 8q + j holds spring
+        // 8j + q of the block, so the springs of kernels.h's groups of four come from places 8
+        // springs apart. Springs next to each other in mesh order share particles, and a group that
+        // adds into the same accumulator several times waits on its own stores (5.2 ns per spring
+        // in mesh order, 3.3 interleaved, groups of four).
+        band.restBegin = uint32_t(out.order.size());
+        const size_t n = restAt[b + 1] - restAt[b];
+        const Index* mine = restOrder.data() + restAt[b];
+        constexpr size_t kBlock = 64, kWays = 8, kLane = kBlock / kWays;
+        for (size_t e = 0; e < n; ++e) {
+            const size_t base = e - e % kBlock, q = e % kBlock;
+            const size_t i = base + kBlock <= n ? base + (q % kWays) * kLane + q / kWays : e;
+            out.order.push_back(mine[i]);
+            out.swapped.push_back(0);
+        }
+        band.restEnd = uint32_t(out.order.size());
+        if (band.groupsEnd > band.groupsBegin || band.restEnd > band.restBegin) out.bands.push_back(band);
+    }
+    out.groups = std::move(groups);
     return out;
 }
 
 namespace {
 
-// The arrays of one group's kernel: the particles' six components, then the forces' six (first
-// ends x, y, z, second ends x, y, z).
+// The arrays of one group kernel: the particles' six components in, the forces' three out.
 struct GroupArrays {
     const float* in[6];
-    float* out[6];
+    float* out[3];
+};
+
+// A chain (distance = stride, see groupSprings) adds f_j into particle a + s j and takes it from
+// a + s (j + 1): each particle's net is f_j - f_(j-1), added once. f_(-1) is the previous group's
+// last force when that group ended where this one starts (`carry`), else 0; the last force goes to
+// the next group the same way, or alone into a + 8 s (flush).
+struct ChainCarry {
+    bool pending = false;
+    uint32_t at = 0, stride = 0; // the particle it goes into, and the chain's stride
+    float f[3] = {};
+    // The carry for a chain group starting at a: its forces, or zeros after flushing a carry
+    // that goes elsewhere.
+    void take(uint32_t a, uint32_t s, float* out0, float* out1, float* out2, float in[3]) {
+        if (pending && at == a && stride == s) {
+            for (int c = 0; c < 3; ++c) in[c] = f[c];
+        } else {
+            flush(out0, out1, out2);
+            in[0] = in[1] = in[2] = 0.f;
+        }
+        pending = false;
+    }
+    void flush(float* out0, float* out1, float* out2) {
+        if (!pending) return;
+        out0[at] -= f[0];
+        out1[at] -= f[1];
+        out2[at] -= f[2];
+        pending = false;
+    }
 };
 
 #if defined(__SSE2__)
@@ -163,7 +222,7 @@ inline __m128 load4(const float* c, uint32_t p, uint32_t s) {
     return _mm_shuffle_ps(_mm_loadu_ps(c + p), _mm_loadu_ps(c + p + 4), _MM_SHUFFLE(2, 0, 2, 0));
 }
 
-// to[p + s j] += f[j] (j = 0..3; sign -1: -= f[j]); with s = 2 the floats between get + 0.
+// to[p + s j] += f[j] (j = 0..3; minus: -=); with s = 2 the floats between get + 0.
 inline void add4(float* to, uint32_t p, uint32_t s, __m128 f, bool minus) {
     auto rmw = [&](float* at, __m128 v) {
         const __m128 old = _mm_loadu_ps(at);
@@ -175,37 +234,61 @@ inline void add4(float* to, uint32_t p, uint32_t s, __m128 f, bool minus) {
     rmw(to + p + 4, _mm_unpackhi_ps(f, zero));
 }
 
+// The forces along the springs of four lanes, f (x, y, z) = (k (L - L0) + kd (v_b - v_a).n) n.
+inline void forces4(const GroupArrays& A, uint32_t a, uint32_t b, uint32_t s, const float* rest, const float* k,
+                    const float* kd, size_t e, __m128 out[3]) {
+    const __m128 one = _mm_set1_ps(1.f);
+    __m128 d[3], dv[3];
+    for (int i = 0; i < 3; ++i) {
+        d[i] = _mm_sub_ps(load4(A.in[i], b, s), load4(A.in[i], a, s));
+        dv[i] = _mm_sub_ps(load4(A.in[3 + i], b, s), load4(A.in[3 + i], a, s));
+    }
+    const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
+    const __m128 len = _mm_sqrt_ps(len2);
+    const __m128 valid = _mm_cmpgt_ps(len, _mm_set1_ps(1e-12f));
+    const __m128 inv = _mm_div_ps(one, _mm_or_ps(_mm_andnot_ps(valid, one), _mm_and_ps(valid, len)));
+    const __m128 dvd = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
+    const __m128 stretch = _mm_mul_ps(_mm_loadu_ps(k + e), _mm_sub_ps(len, _mm_loadu_ps(rest + e)));
+    const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + e), _mm_mul_ps(dvd, inv));
+    const __m128 f = _mm_and_ps(valid, _mm_mul_ps(_mm_add_ps(stretch, damp), inv));
+    for (int i = 0; i < 3; ++i) out[i] = _mm_mul_ps(f, d[i]);
+}
+
 void groupsSse2(const SpringGroup* groups, size_t g0, size_t g1, const float* rest, const float* k, const float* kd,
                 const GroupArrays& A) {
-    const __m128 one = _mm_set1_ps(1.f), tiny = _mm_set1_ps(1e-12f);
+    ChainCarry carry;
     for (size_t g = g0; g < g1; ++g) {
         const SpringGroup& G = groups[g];
         const uint32_t s = G.stride;
-        for (uint32_t h = 0; h < 2; ++h) {
-            const uint32_t a = G.a + 4 * h * s, b = G.b + 4 * h * s;
-            const size_t e = G.entry + 4 * h;
-            __m128 d[3], dv[3];
+        __m128 lo[3], hi[3]; // springs 0-3 and 4-7
+        forces4(A, G.a, G.b, s, rest, k, kd, G.entry, lo);
+        forces4(A, G.a + 4 * s, G.b + 4 * s, s, rest, k, kd, G.entry + 4, hi);
+        if (G.b - G.a != s) {
+            carry.flush(A.out[0], A.out[1], A.out[2]);
             for (int i = 0; i < 3; ++i) {
-                d[i] = _mm_sub_ps(load4(A.in[i], b, s), load4(A.in[i], a, s));
-                dv[i] = _mm_sub_ps(load4(A.in[3 + i], b, s), load4(A.in[3 + i], a, s));
+                add4(A.out[i], G.a, s, lo[i], false);
+                add4(A.out[i], G.a + 4 * s, s, hi[i], false);
+                add4(A.out[i], G.b, s, lo[i], true);
+                add4(A.out[i], G.b + 4 * s, s, hi[i], true);
             }
-            const __m128 len2 =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
-            const __m128 len = _mm_sqrt_ps(len2);
-            const __m128 valid = _mm_cmpgt_ps(len, tiny);
-            const __m128 inv = _mm_div_ps(one, _mm_or_ps(_mm_andnot_ps(valid, one), _mm_and_ps(valid, len)));
-            const __m128 dvd =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
-            const __m128 stretch = _mm_mul_ps(_mm_loadu_ps(k + e), _mm_sub_ps(len, _mm_loadu_ps(rest + e)));
-            const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + e), _mm_mul_ps(dvd, inv));
-            const __m128 f = _mm_and_ps(valid, _mm_mul_ps(_mm_add_ps(stretch, damp), inv));
-            for (int i = 0; i < 3; ++i) {
-                const __m128 fi = _mm_mul_ps(f, d[i]);
-                add4(A.out[i], a, s, fi, false);
-                add4(A.out[3 + i], b, s, fi, true);
-            }
+            continue;
         }
+        float in[3];
+        carry.take(G.a, s, A.out[0], A.out[1], A.out[2], in);
+        for (int i = 0; i < 3; ++i) {
+            // (f_-1, f0, f1, f2) and (f3, f4, f5, f6): the forces one lane later.
+            const __m128 prevLo = _mm_move_ss(_mm_shuffle_ps(lo[i], lo[i], _MM_SHUFFLE(2, 1, 0, 0)), _mm_set_ss(in[i]));
+            const __m128 prevHi = _mm_move_ss(_mm_shuffle_ps(hi[i], hi[i], _MM_SHUFFLE(2, 1, 0, 0)),
+                                              _mm_shuffle_ps(lo[i], lo[i], _MM_SHUFFLE(3, 3, 3, 3)));
+            add4(A.out[i], G.a, s, _mm_sub_ps(lo[i], prevLo), false);
+            add4(A.out[i], G.a + 4 * s, s, _mm_sub_ps(hi[i], prevHi), false);
+            carry.f[i] = _mm_cvtss_f32(_mm_shuffle_ps(hi[i], hi[i], _MM_SHUFFLE(3, 3, 3, 3)));
+        }
+        carry.pending = true;
+        carry.at = G.a + kGroupSize * s;
+        carry.stride = s;
     }
+    carry.flush(A.out[0], A.out[1], A.out[2]);
 }
 #endif
 
@@ -236,6 +319,8 @@ __attribute__((target("avx2"))) inline void add8(float* to, uint32_t p, uint32_t
 __attribute__((target("avx2"))) void groupsAvx2(const SpringGroup* groups, size_t g0, size_t g1, const float* rest,
                                                 const float* k, const float* kd, const GroupArrays& A) {
     const __m256 one = _mm256_set1_ps(1.f), tiny = _mm256_set1_ps(1e-12f);
+    const __m256i laterLane = _mm256_setr_epi32(0, 0, 1, 2, 3, 4, 5, 6);
+    ChainCarry carry;
     for (size_t g = g0; g < g1; ++g) {
         const SpringGroup& G = groups[g];
         const uint32_t a = G.a, b = G.b, s = G.stride;
@@ -255,14 +340,29 @@ __attribute__((target("avx2"))) void groupsAvx2(const SpringGroup* groups, size_
         const __m256 stretch = _mm256_mul_ps(_mm256_loadu_ps(k + e), _mm256_sub_ps(len, _mm256_loadu_ps(rest + e)));
         const __m256 damp = _mm256_mul_ps(_mm256_loadu_ps(kd + e), _mm256_mul_ps(dvd, inv));
         const __m256 f = _mm256_and_ps(valid, _mm256_mul_ps(_mm256_add_ps(stretch, damp), inv));
-        const __m256 fx = _mm256_mul_ps(f, dx), fy = _mm256_mul_ps(f, dy), fz = _mm256_mul_ps(f, dz);
-        add8(A.out[0], a, s, fx, false);
-        add8(A.out[3], b, s, fx, true);
-        add8(A.out[1], a, s, fy, false);
-        add8(A.out[4], b, s, fy, true);
-        add8(A.out[2], a, s, fz, false);
-        add8(A.out[5], b, s, fz, true);
+        const __m256 fv[3] = {_mm256_mul_ps(f, dx), _mm256_mul_ps(f, dy), _mm256_mul_ps(f, dz)};
+        if (b - a != s) {
+            carry.flush(A.out[0], A.out[1], A.out[2]);
+            for (int i = 0; i < 3; ++i) {
+                add8(A.out[i], a, s, fv[i], false);
+                add8(A.out[i], b, s, fv[i], true);
+            }
+            continue;
+        }
+        float in[3];
+        carry.take(a, s, A.out[0], A.out[1], A.out[2], in);
+        for (int i = 0; i < 3; ++i) {
+            // (f_-1, f0, ..., f6): the forces one lane later.
+            const __m256 prev = _mm256_blend_ps(_mm256_permutevar8x32_ps(fv[i], laterLane), _mm256_set1_ps(in[i]), 0x01);
+            add8(A.out[i], a, s, _mm256_sub_ps(fv[i], prev), false);
+            carry.f[i] = _mm_cvtss_f32(_mm_shuffle_ps(_mm256_extractf128_ps(fv[i], 1), _mm256_extractf128_ps(fv[i], 1),
+                                                      _MM_SHUFFLE(3, 3, 3, 3)));
+        }
+        carry.pending = true;
+        carry.at = a + kGroupSize * s;
+        carry.stride = s;
     }
+    carry.flush(A.out[0], A.out[1], A.out[2]);
 }
 #endif
 
@@ -284,7 +384,7 @@ void groupsScalar(const SpringGroup* groups, size_t g0, size_t g1, const float* 
             const float fv[3] = {f * dx, f * dy, f * dz};
             for (int i = 0; i < 3; ++i) {
                 A.out[i][a] += fv[i];
-                A.out[3 + i][b] -= fv[i];
+                A.out[i][b] -= fv[i];
             }
         }
     }
@@ -295,7 +395,8 @@ void groupsScalar(const SpringGroup* groups, size_t g0, size_t g1, const float* 
 void springForcesGrouped(GroupKernel kernel, const SpringGroup* groups, size_t g0, size_t g1, const float* rest,
                          const float* k, const float* kd, const ComponentArrays& particles, ComponentArrays& forces) {
     GroupArrays A;
-    for (int i = 0; i < 6; ++i) A.in[i] = particles.component(i), A.out[i] = forces.component(i);
+    for (int i = 0; i < 6; ++i) A.in[i] = particles.component(i);
+    for (int i = 0; i < 3; ++i) A.out[i] = forces.component(i);
     switch (kernel) {
 #if CLOTHTEAR_GROUPS_AVX2
     case GroupKernel::Avx2: groupsAvx2(groups, g0, g1, rest, k, kd, A); return;

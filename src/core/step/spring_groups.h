@@ -19,17 +19,15 @@ struct SpringGroup {
     uint32_t entry, a, b, stride;
 };
 
-// Six float arrays over the particles, `stride` floats apart, each with room for a vector load or
-// store past its last particle (a group of stride 2 spans 16 floats): the particles' positions and
-// velocities (x, y, z, vx, vy, vz) for the groups' kernel, and its forces (a thread's sums on the
-// groups' first ends x, y, z, then on their second ends). A group adds into eight consecutive first
-// ends and eight consecutive second ends; with one array for both, a horizontal spring's group
-// would load the eight floats it had just stored shifted by one, which the CPU cannot forward from
-// the store (3 x slower in a test loop than separate arrays).
+// Float arrays over the particles, one per component, `stride` floats apart, each with room for a
+// vector load or store past its last particle (a group of stride 2 spans 16 floats): the
+// particles' positions and velocities (x, y, z, vx, vy, vz) for the groups' kernel, and a thread's
+// sums of its groups' forces (x, y, z), which the integrator adds to the other forces.
 struct ComponentArrays {
     std::vector<float> data;
     size_t stride = 0;
-    void resize(size_t particles); // zeroes everything when the size changes
+    int components = 0;
+    void resize(size_t particles, int count); // zeroes everything when the size changes
     float* component(int c) { return data.data() + size_t(c) * stride; }
     const float* component(int c) const { return data.data() + size_t(c) * stride; }
 };
@@ -40,16 +38,26 @@ struct ComponentArrays {
 enum class GroupKernel : uint8_t { None, Sse2, Avx2 };
 GroupKernel groupKernelInUse();
 
+// Springs are ordered by bands of 2^kBandShift first particles (their smaller end's index).
+inline constexpr unsigned kBandShift = 10;
+
+// One band of one kind of spring: groups [groupsBegin, groupsEnd), whose entries come first, then
+// the other springs at entries [restBegin, restEnd).
+struct SpringBand {
+    uint32_t groupsBegin = 0, groupsEnd = 0, restBegin = 0, restEnd = 0;
+};
+
 // The order of one kind of spring in the cache. Springs [0, count) of `springs` are sorted by the
 // distance of their ends' indices; runs of eight with ends a + s j, b + s j (s = 1 or 2, the smaller
-// index as a) become groups, ordered by their first particle so that a thread's chunk of them
-// touches a band of the cloth. order[e] is the spring at entry e (groups first, 8 entries each,
-// then the rest in mesh order); swapped[e] says the entry's ends are (b, a); groups[g].entry is
-// relative to the kind's first entry.
+// index as a) become groups. Then band by band (groupSprings says why): the band's groups, 8
+// entries each, then its other springs in mesh order. order[e] is the spring at entry e;
+// swapped[e] says the entry's ends are (b, a); entries and group indices are relative to the
+// kind's first entry and first group. Without makeGroups: one band, every spring in mesh order.
 struct SpringOrder {
     std::vector<Index> order;
     std::vector<uint8_t> swapped;
     std::vector<SpringGroup> groups;
+    std::vector<SpringBand> bands;
 };
 SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_t particles, bool makeGroups);
 

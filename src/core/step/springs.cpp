@@ -127,9 +127,16 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     const SpringOrder bendOrder = groupSprings(cloth.bends, nb, cloth.particleCount(), groups);
     S.groups = structuralOrder.groups;
     S.structuralGroups = S.groups.size();
+    S.bands = structuralOrder.bands;
+    S.structuralBands = S.bands.size();
     for (SpringGroup g : bendOrder.groups) {
         g.entry += uint32_t(ns);
         S.groups.push_back(g);
+    }
+    for (SpringBand b : bendOrder.bands) {
+        b.groupsBegin += uint32_t(S.structuralGroups), b.groupsEnd += uint32_t(S.structuralGroups);
+        b.restBegin += uint32_t(ns), b.restEnd += uint32_t(ns);
+        S.bands.push_back(b);
     }
     const float kCap = kStiffnessCap / (dt * dt), kdCap = kDampingCap / dt;
     auto fill = [&](const std::vector<Spring>& springs, const SpringOrder& order, size_t offset, float ks, float kds) {
@@ -209,28 +216,34 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     }
     const size_t n = cloth.particleCount();
     const size_t ns = S.structural, nb = S.a16.size() - S.structural;
-    const size_t gs = S.structuralGroups, gb = S.groups.size() - gs; // groups of each kind
     const int threads = int(state.threads.acc.size());
     const int nt = (threads > 1 && ns + nb >= kParallelWork) ? threads : 1;
-    // A thread's share of each kind: a chunk of its groups and a chunk of its other springs, as
-    // ranges of groups and of cache entries.
-    struct Share {
-        Chunk groups[2], entries[2];
-    };
-    auto shareOf = [&](int t) {
-        Share s;
-        s.groups[0] = chunkOf(gs, t, nt);
-        s.groups[1] = chunkOf(gb, t, nt);
-        s.groups[1].begin += gs, s.groups[1].end += gs;
-        const Chunk rs = chunkOf(ns - kGroupSize * gs, t, nt), rb = chunkOf(nb - kGroupSize * gb, t, nt);
-        s.entries[0] = {kGroupSize * gs + rs.begin, kGroupSize * gs + rs.end};
-        s.entries[1] = {ns + kGroupSize * gb + rb.begin, ns + kGroupSize * gb + rb.end};
-        return s;
+    // Thread t's share of each kind: its chunk of the kind's entries, band by band its groups (a
+    // group goes with its first entry) and its other springs.
+    auto forShare = [&](int t, auto&& groups, auto&& rest) {
+        for (int kind = 0; kind < 2; ++kind) {
+            const size_t first = kind ? ns : 0;
+            const Chunk c = chunkOf(kind ? nb : ns, t, nt);
+            const size_t e0 = first + c.begin, e1 = first + c.end;
+            const size_t b0 = kind ? S.structuralBands : 0, b1 = kind ? S.bands.size() : S.structuralBands;
+            for (size_t b = b0; b < b1; ++b) {
+                const SpringBand& band = S.bands[b];
+                if (band.groupsEnd > band.groupsBegin) {
+                    const size_t g0 = S.groups[band.groupsBegin].entry; // the band's first group entry
+                    auto at = [&](size_t e) {
+                        const size_t k = e <= g0 ? 0 : (e - g0 + kGroupSize - 1) / kGroupSize;
+                        return std::min<size_t>(band.groupsBegin + k, band.groupsEnd);
+                    };
+                    if (at(e0) < at(e1)) groups(at(e0), at(e1));
+                }
+                const size_t r0 = std::max<size_t>(band.restBegin, e0), r1 = std::min<size_t>(band.restEnd, e1);
+                if (r0 < r1) rest(r0, r1);
+            }
+        }
     };
     if (S.threadRange.size() != size_t(nt)) {
         S.threadRange.assign(nt, {n, 0});
         for (int t = 0; t < nt; ++t) {
-            const Share s = shareOf(t);
             size_t lo = n, hi = 0;
             auto widen = [&](size_t b, size_t e) {
                 for (size_t i = b; i < e; ++i) {
@@ -238,9 +251,8 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
                     hi = std::max<size_t>(hi, std::max(S.a16[i], S.b16[i]) / 16 + 1);
                 }
             };
-            for (const Chunk& g : s.groups)
-                if (g.end > g.begin) widen(S.groups[g.begin].entry, S.groups[g.end - 1].entry + kGroupSize);
-            for (const Chunk& c : s.entries) widen(c.begin, c.end);
+            forShare(
+                t, [&](size_t g0, size_t g1) { widen(S.groups[g0].entry, S.groups[g1 - 1].entry + kGroupSize); }, widen);
             S.threadRange[t] = {lo, hi};
         }
     }
@@ -256,10 +268,10 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
                                                                              : "sse2";
     float* components[6] = {};
     if (grouped) {
-        state.components.resize(n);
+        state.components.resize(n, 6);
         for (int c = 0; c < 6; ++c) components[c] = state.components.component(c);
         state.threads.groupForces.resize(size_t(nt));
-        for (ComponentArrays& f : state.threads.groupForces) f.resize(n);
+        for (ComponentArrays& f : state.threads.groupForces) f.resize(n, 3);
     }
     state.threads.groupForcesSet = grouped;
     parallelRegion(ns + nb, nt, [&](int t, int nt2) {
@@ -267,14 +279,13 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
         packParticles(pc.begin, pc.end, n, x, v, packed, grouped ? components : nullptr);
         parallelBarrier(nt2);
         Eigen::Vector4f* acc = state.threads.acc[t].data();
-        const Share s = shareOf(t);
-        for (int kind = 0; kind < 2; ++kind) {
-            if (grouped)
-                springForcesGrouped(S.groupKernel, S.groups.data(), s.groups[kind].begin, s.groups[kind].end,
-                                    S.rest.data(), S.k.data(), S.kd.data(), state.components,
-                                    state.threads.groupForces[size_t(t)]);
-            springForces(arrays, s.entries[kind].begin, s.entries[kind].end, packed, acc);
-        }
+        forShare(
+            t,
+            [&](size_t g0, size_t g1) {
+                springForcesGrouped(S.groupKernel, S.groups.data(), g0, g1, S.rest.data(), S.k.data(), S.kd.data(),
+                                    state.components, state.threads.groupForces[size_t(t)]);
+            },
+            [&](size_t e0, size_t e1) { springForces(arrays, e0, e1, packed, acc); });
     });
 }
 

@@ -51,10 +51,12 @@ struct SpringCache {
     bool kes = false;                // built for the kes model (no bend-shear entries)
     bool perSpringCaps = false;      // built with the per-spring caps (StepContext::perSpringCaps)
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
-    // Groups of eight evenly spaced springs (spring_groups.h): each kind's entries begin with its
-    // groups; groups [0, structuralGroups) are structural, the rest bend-shear.
+    // Groups of eight evenly spaced springs (spring_groups.h) and the bands of each kind (entries
+    // and group indices absolute): groups and bands [0, structural*) are structural, the rest
+    // bend-shear.
     std::vector<SpringGroup> groups;
-    size_t structuralGroups = 0;
+    std::vector<SpringBand> bands;
+    size_t structuralGroups = 0, structuralBands = 0;
     GroupKernel groupKernel = GroupKernel::None;
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
     // What the stability guard took from the material (World::guardCappedSprings reports it):
