@@ -100,10 +100,10 @@ void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state) {
 // revision: a particle let go by a tool is capped from its first sub-step; one sub-step late, a
 // torn-off sliver of 1e-15 kg went to 1e8 m/s in the soak), the material and dt.
 //
-// Order (groupSprings, spring_groups.h): per kind, the groups of eight evenly spaced springs by
-// first particle, then the other springs in mesh order, interleaved in blocks of 64 so that a SIMD
-// group of kernels.h does not add into one accumulator several times. Both parts run along the
-// cloth, so a thread's chunk of each touches a band.
+// Order (groupSprings, spring_groups.h): per kind, band by band along the cloth, the band's groups
+// of eight evenly spaced springs, then its other springs in mesh order (interleaved in blocks of 64
+// so that a SIMD group of kernels.h does not add into one accumulator several times). A thread's
+// chunk of the entries then touches a band of the cloth.
 void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state) {
     SpringCache& S = state.springs;
     if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps) && S.perSpringCaps == ctx.perSpringCaps) return;
@@ -120,7 +120,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     S.index.resize(ns + nb);
     for (auto* a : {&S.rest, &S.k, &S.kd}) a->resize(ns + nb);
     S.structural = ns;
-    // Groups of eight evenly spaced springs first (spring_groups.h), then the rest of each kind.
+    // Each kind band by band: its groups of eight evenly spaced springs, then its other springs.
     S.groupKernel = kes ? GroupKernel::None : groupKernelInUse();
     const bool groups = S.groupKernel != GroupKernel::None;
     const SpringOrder structuralOrder = groupSprings(cloth.springs, ns, cloth.particleCount(), groups);
@@ -263,14 +263,14 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     PackedParticle* packed = state.packed.data();
     const bool grouped = !S.groups.empty();
     ctx.profile->groupedSprings = kGroupSize * S.groups.size();
-    ctx.profile->springKernel = !grouped                                  ? "generic"
-                                  : S.groupKernel == GroupKernel::Avx2 ? "avx2"
-                                                                             : "sse2";
+    ctx.profile->springKernel = !grouped ? "generic" : S.groupKernel == GroupKernel::Avx2 ? "avx2" : "sse2";
     float* components[6] = {};
     if (grouped) {
         state.components.resize(n, 6);
         for (int c = 0; c < 6; ++c) components[c] = state.components.component(c);
-        state.threads.groupForces.resize(size_t(nt));
+        // One per force buffer, not per thread this phase uses: the wind phase may fill a buffer
+        // this one did not, and the integrator reads a group array beside every buffer it reads.
+        state.threads.groupForces.resize(size_t(threads));
         for (ComponentArrays& f : state.threads.groupForces) f.resize(n, 3);
     }
     state.threads.groupForcesSet = grouped;
