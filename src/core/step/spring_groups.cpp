@@ -47,15 +47,15 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
     // of stride 2) overlap the first ends' (distance below 16), the load of the second would read
     // floats the store of the first had just written, shifted, which the CPU cannot forward: those
     // groups are allowed only as chains (distance = stride: a grid's horizontal springs), whose
-    // kernel adds each particle's two forces in one (chainNet).
+    // kernel adds each particle's two forces in one (ChainCarry).
     auto groupable = [](size_t d, uint32_t s) { return d == s || d >= 2 * kGroupSize; };
     SpringOrder out;
     out.order.reserve(count);
     out.swapped.reserve(count);
     std::vector<uint8_t> grouped(count, 0);
     auto lo = [&](size_t i) { return std::min(springs[i].a, springs[i].b); };
-    std::vector<uint32_t> byDistance, groupFirst; // groups' springs: byDistance[groupFirst[g] + j]
     auto hi = [&](size_t i) { return std::max(springs[i].a, springs[i].b); };
+    std::vector<uint32_t> byDistance, groupFirst; // groups' springs: byDistance[groupFirst[g] + j]
     if (makeGroups && count >= kGroupSize && particles > 1) {
         // Sorted by the distance of the ends' indices, then by the first end (stable counting
         // sorts). Mesh order is not enough: a grid's horizontal bend-shear springs come in the order
