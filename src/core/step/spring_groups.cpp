@@ -51,11 +51,15 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
     auto groupable = [](size_t d, uint32_t s) { return d == s || d >= 2 * kGroupSize; };
     SpringOrder out;
     out.order.reserve(count);
-    out.swapped.reserve(count);
     std::vector<uint8_t> grouped(count, 0);
     auto lo = [&](size_t i) { return std::min(springs[i].a, springs[i].b); };
     auto hi = [&](size_t i) { return std::max(springs[i].a, springs[i].b); };
-    std::vector<uint32_t> byDistance, groupFirst; // groups' springs: byDistance[groupFirst[g] + j]
+    std::vector<uint32_t> byDistance;
+    struct Found {
+        uint32_t first; // its springs: byDistance[first + j]
+        SpringGroup group;
+    };
+    std::vector<Found> found;
     if (makeGroups && count >= kGroupSize && particles > 1) {
         // Sorted by the distance of the ends' indices, then by the first end (stable counting
         // sorts). Mesh order is not enough: a grid's horizontal bend-shear springs come in the order
@@ -84,11 +88,6 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
         std::vector<uint32_t> start(particles + 1, 0); // first entry of each distance in byDistance
         for (uint32_t i : byDistance) ++start[distance(i) + 1];
         for (size_t d = 1; d <= particles; ++d) start[d] += start[d - 1];
-        struct Found {
-            uint32_t first; // into byDistance
-            SpringGroup group;
-        };
-        std::vector<Found> found;
         for (size_t d = 1; d < particles; ++d) {
             const size_t end = start[d + 1];
             for (size_t i = start[d]; i + kGroupSize <= end;) {
@@ -112,10 +111,6 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
                 i += kGroupSize;
             }
         }
-        out.groups.reserve(found.size());
-        for (const Found& f : found) out.groups.push_back(f.group);
-        groupFirst.reserve(found.size());
-        for (const Found& f : found) groupFirst.push_back(f.first);
     }
     // Bands of 2^kBandShift first particles, in order; in each band its groups, then its other
     // springs. A thread's chunk of the entries then touches a band of the cloth (the integrator
@@ -131,32 +126,27 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
     const size_t bands = makeGroups ? (particles >> kBandShift) + 1 : 1;
     auto bandOf = [&](uint32_t first) { return makeGroups ? size_t(first >> kBandShift) : size_t(0); };
     std::vector<uint32_t> groupAt(bands + 1, 0), restAt(bands + 1, 0);
-    for (const SpringGroup& g : out.groups) ++groupAt[bandOf(g.a) + 1];
+    for (const Found& f : found) ++groupAt[bandOf(f.group.a) + 1];
     for (Index i : rest) ++restAt[bandOf(lo(i)) + 1];
     for (size_t b = 1; b <= bands; ++b) groupAt[b] += groupAt[b - 1], restAt[b] += restAt[b - 1];
-    std::vector<uint32_t> groupOrder(out.groups.size());
+    std::vector<uint32_t> groupOrder(found.size());
     std::vector<Index> restOrder(rest.size());
     {
         std::vector<uint32_t> g(groupAt.begin(), groupAt.end() - 1), r(restAt.begin(), restAt.end() - 1);
-        for (size_t k = 0; k < out.groups.size(); ++k) groupOrder[g[bandOf(out.groups[k].a)]++] = uint32_t(k);
+        for (size_t k = 0; k < found.size(); ++k) groupOrder[g[bandOf(found[k].group.a)]++] = uint32_t(k);
         for (Index i : rest) restOrder[r[bandOf(lo(i))]++] = i;
     }
-    std::vector<SpringGroup> groups;
-    groups.reserve(out.groups.size());
+    out.groups.reserve(found.size());
     for (size_t b = 0; b < bands; ++b) {
         SpringBand band;
-        band.groupsBegin = uint32_t(groups.size());
+        band.groupsBegin = uint32_t(out.groups.size());
         for (uint32_t k = groupAt[b]; k < groupAt[b + 1]; ++k) {
-            SpringGroup group = out.groups[groupOrder[k]];
-            group.entry = uint32_t(out.order.size());
-            groups.push_back(group);
-            for (size_t j = 0; j < kGroupSize; ++j) {
-                const Index sp = byDistance[groupFirst[groupOrder[k]] + j];
-                out.order.push_back(sp);
-                out.swapped.push_back(springs[sp].a > springs[sp].b);
-            }
+            const Found& f = found[groupOrder[k]];
+            out.groups.push_back(f.group);
+            out.groups.back().entry = uint32_t(out.order.size());
+            for (size_t j = 0; j < kGroupSize; ++j) out.order.push_back(byDistance[f.first + j]);
         }
-        band.groupsEnd = uint32_t(groups.size());
+        band.groupsEnd = uint32_t(out.groups.size());
         // The other springs in mesh order, permuted within blocks of 64: entry 8q + j holds spring
         // 8j + q of the block, so the springs of kernels.h's groups of four come from places 8
         // springs apart. Springs next to each other in mesh order share particles, and a group that
@@ -170,12 +160,10 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
             const size_t base = e - e % kBlock, q = e % kBlock;
             const size_t i = base + kBlock <= n ? base + (q % kWays) * kLane + q / kWays : e;
             out.order.push_back(mine[i]);
-            out.swapped.push_back(0);
         }
         band.restEnd = uint32_t(out.order.size());
         if (band.groupsEnd > band.groupsBegin || band.restEnd > band.restBegin) out.bands.push_back(band);
     }
-    out.groups = std::move(groups);
     return out;
 }
 

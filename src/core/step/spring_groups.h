@@ -51,12 +51,12 @@ struct SpringBand {
 // The order of one kind of spring in the cache. Springs [0, count) of `springs` are sorted by the
 // distance of their ends' indices; runs of eight with ends a + s j, b + s j (s = 1 or 2, the smaller
 // index as a) become groups. Then band by band (groupSprings says why): the band's groups, 8
-// entries each, then its other springs in mesh order. order[e] is the spring at entry e;
-// swapped[e] says the entry's ends are (b, a); entries and group indices are relative to the
-// kind's first entry and first group. Without makeGroups: one band, every spring in mesh order.
+// entries each, then its other springs in mesh order. order[e] is the spring at entry e (its ends
+// as the spring has them; a group's kernel reads its own a and b); entries and group indices are
+// relative to the kind's first entry and first group. Without makeGroups: one band, every spring in
+// mesh order.
 struct SpringOrder {
     std::vector<Index> order;
-    std::vector<uint8_t> swapped;
     std::vector<SpringGroup> groups;
     std::vector<SpringBand> bands;
 };

@@ -149,9 +149,8 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
                 if (k * w > kCap) k = kCap / w;
                 if (damping * w > kdCap) damping = kdCap / w;
             }
-            const bool swap = order.swapped[e];
-            S.a16[offset + e] = 16u * (swap ? s.b : s.a);
-            S.b16[offset + e] = 16u * (swap ? s.a : s.b);
+            S.a16[offset + e] = 16u * s.a;
+            S.b16[offset + e] = 16u * s.b;
             S.index[offset + e] = i;
             S.rest[offset + e] = s.rest;
             S.k[offset + e] = k;
