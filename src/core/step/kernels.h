@@ -106,15 +106,19 @@ inline void springForces(const SpringArrays& s, size_t begin, size_t end, const 
 
 // Calls flagged(i, len2) for every spring i of [begin, end) whose squared length len2 is above
 // (rest_i * ratio)^2: the strain scan of the limit phase, with no square root. Four springs at a
-// time with SSE2; most groups of four are all below and cost one compare.
+// time with SSE2; most groups of four are all below and cost one compare. Returns whether any spring
+// is above (rest_i * watchRatio)^2 (a second, lower bar that calls nothing: the limit asks whether a
+// tether can pull at all, see limit.cpp).
 template <class Flagged>
-inline void scanSprings(const SpringArrays& s, size_t begin, size_t end, float ratio, const PackedParticle* xv,
-                        Flagged&& flagged) {
+inline bool scanSprings(const SpringArrays& s, size_t begin, size_t end, float ratio, float watchRatio,
+                        const PackedParticle* xv, Flagged&& flagged) {
     size_t i = begin;
-    const float ratio2 = ratio * ratio;
+    const float ratio2 = ratio * ratio, watch2 = watchRatio * watchRatio;
+    bool watched = false;
 #if defined(__SSE2__)
     const char* px = reinterpret_cast<const char*>(xv);
-    const __m128 r2 = _mm_set1_ps(ratio2);
+    const __m128 r2 = _mm_set1_ps(ratio2), w2 = _mm_set1_ps(watch2);
+    __m128 anyWatched = _mm_setzero_ps();
     for (; i + 4 <= end; i += 4) {
         __m128 d[4];
         for (int j = 0; j < 4; ++j) {
@@ -126,21 +130,26 @@ inline void scanSprings(const SpringArrays& s, size_t begin, size_t end, float r
         _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
         const __m128 len2 = _mm_add_ps(_mm_add_ps(d[0], d[1]), d[2]);
         const __m128 r = _mm_loadu_ps(s.rest + i);
-        const int mask = _mm_movemask_ps(_mm_cmpgt_ps(len2, _mm_mul_ps(_mm_mul_ps(r, r), r2)));
+        const __m128 rr = _mm_mul_ps(r, r);
+        anyWatched = _mm_or_ps(anyWatched, _mm_cmpgt_ps(len2, _mm_mul_ps(rr, w2)));
+        const int mask = _mm_movemask_ps(_mm_cmpgt_ps(len2, _mm_mul_ps(rr, r2)));
         if (mask == 0) continue;
         alignas(16) float l2[4];
         _mm_store_ps(l2, len2);
         for (int j = 0; j < 4; ++j)
             if (mask & (1 << j)) flagged(i + j, l2[j]);
     }
+    watched = _mm_movemask_ps(anyWatched) != 0;
 #endif
     for (; i < end; ++i) {
         const PackedParticle& A = packedAt(xv, s.a16[i]);
         const PackedParticle& B = packedAt(xv, s.b16[i]);
         const float dx = B.x[0] - A.x[0], dy = B.x[1] - A.x[1], dz = B.x[2] - A.x[2];
         const float len2 = dx * dx + dy * dy + dz * dz;
+        watched |= len2 > s.rest[i] * s.rest[i] * watch2;
         if (len2 > s.rest[i] * s.rest[i] * ratio2) flagged(i, len2);
     }
+    return watched;
 }
 
 } // namespace clothtear

@@ -24,7 +24,8 @@
 //   1. scan     reads every structural spring once (four at a time, kernels.h); most leave after one
 //               squared-length compare, no square root. Lists the candidates and the springs over
 //               the limit.
-//   2. tethers  (tethers.h) pull every particle back within reach of its anchor. A tether whose
+//   2. tethers  (tethers.h) pull every particle back within reach of its anchor; skipped when the
+//               scan saw no spring past the tethers' reach ratio (then none can pull). A tether whose
 //               path runs through a tear candidate (or a ball contact) does not pull this sub-step;
 //               the scan comes first so that a spring reaching its threshold is seen before anything
 //               pulls it back. The springs of the particles a tether moved are listed if it pushed
@@ -155,6 +156,8 @@ private:
         return false;
     }
 
+    // A tether holds its particle within this ratio of its path's rest length (tethers.h).
+    float tetherReachRatio() const { return ctx_.maxRatio * (1.f - kTetherSlack); }
     void scan(int t, int nt);
     void prepareTethers(int nt);
     void pullTethers(int t, int nt, bool anyFound);
@@ -195,6 +198,9 @@ private:
     uint32_t* movedIn_;
     float exemptStrain_ = -1.f; // with too many candidates: those below this strain are limited
     size_t listSize_[kMaxThreadSlots] = {};
+    // Per thread: did the scan see a structural spring longer than tetherReachRatio() x (1 -
+    // kTetherBoundMargin) x rest? If no thread did, no tether can pull this sub-step (pullTethers).
+    bool tethersMayPull_[kMaxThreadSlots] = {};
     int work_[kMaxThreadSlots] = {};
 };
 
@@ -225,7 +231,8 @@ void LimitSolve::scan(int t, int nt) {
     std::vector<Index>& list = T_.active[t];
     std::vector<TearCandidate>& found = T_.found[t];
     const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
-    scanSprings(arrays, sc.begin, sc.end, scanRatio, state_.packed.data(), [&](size_t e, float len2) {
+    const float watchRatio = useTethers_ ? tetherReachRatio() * (1.f - kTetherBoundMargin) : 0.f;
+    tethersMayPull_[t] = scanSprings(arrays, sc.begin, sc.end, scanRatio, watchRatio, state_.packed.data(), [&](size_t e, float len2) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
         if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
@@ -241,6 +248,7 @@ void LimitSolve::scan(int t, int nt) {
             list.push_back(Index(i));
         }
     });
+    if (!useTethers_) tethersMayPull_[t] = false;
 }
 
 // Thread 0, after the scan: the tethers that must not pull (their path runs through a candidate or a
@@ -274,6 +282,11 @@ void LimitSolve::prepareTethers(int nt) {
 // moves what this one reads. With no candidates and no contacts (`anyFound` false) every tether pulls.
 void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
     if (!useTethers_) return;
+    // Skipped by every thread alike when no structural spring is past the tethers' reach ratio:
+    // a tether spans a path of springs, so its particle is then within reach (scan()).
+    bool mayPull = false;
+    for (int k = 0; k < nt; ++k) mayPull |= tethersMayPull_[k];
+    if (!mayPull) return;
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     // A tether's pull can stretch the particle's other springs past the limit (sideways, towards
     // another anchor): the passes must see them. The scan read the positions before the pull.
@@ -284,7 +297,7 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
         if (set.order.empty()) continue;
         const size_t first = moved.size();
         tetherKernel(pc.begin, pc.end, set.tether.data(), set.length.data(), anyFound ? set.cut.data() : nullptr,
-                     ctx_.maxRatio * (1.f - kTetherSlack), ctx_.dt, ctx_.velocityFix, packed, x_, v_, moved);
+                     tetherReachRatio(), ctx_.dt, ctx_.velocityFix, packed, x_, v_, moved);
         // The next set reads where this one put them (a thread moves only its own particles; the
         // anchors are pinned).
         for (size_t k = first; k < moved.size(); ++k) {
