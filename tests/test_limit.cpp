@@ -4,8 +4,10 @@
 // Section index:
 //   [PASS]      one Jacobi pass on one over-long spring
 //   [TETHERS]   a curtain too deep for the passes alone
+//   [SKIPS]     the two exact skips of the limit change no bit
 #include "clothtear/mesh.h"
 #include "clothtear/scenes.h"
+#include "clothtear/state_hash.h"
 #include "clothtear/world.h"
 #include "quiet_settings.h"
 
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -214,6 +217,61 @@ TEST(Limit, ASpringThePassesPushPastItsThresholdIsLimitedNotLeftForTheNextScan) 
     ASSERT_TRUE(w.finite);
     EXPECT_EQ(w.tearLog.total(), 0u);
     EXPECT_LT(swing, (1.f + w.settings.limit.maxStretch) * 1.003f - 1.f) << "largest strain while it swings";
+}
+
+// ============================================================================================= [SKIPS]
+
+// The limit skips the tethers when the scan saw no spring past their reach (then no tether can
+// pull), and after a pull of much of the cloth skips listing the moved particles' springs when a
+// scan of every spring finds none that may be over the limit. Both must be exact: the same bits as
+// with the skips off (CLOTHTEAR_LIMIT_SKIPS=0), while each skip is taken. Cases: the settled
+// curtain (tethers skipped), the curtain at 10 sub-steps a frame, whose guard softens its springs
+// so that it hangs on the tethers (listing skipped), and the pull sheet torn by its hand at 60 deg
+// (listing skipped, with tears), each at two resolutions.
+struct SkipRun {
+    uint64_t hash = 0, tears = 0, tethersSkipped = 0, expandSkipped = 0, substeps = 0;
+};
+
+SkipRun runWithSkips(bool skips, const std::string& scene, std::vector<std::string> sets, int frames) {
+    if (skips) unsetenv("CLOTHTEAR_LIMIT_SKIPS");
+    else setenv("CLOTHTEAR_LIMIT_SKIPS", "0", 1);
+    World w;
+    sets.push_back("sleep.enabled=false");
+    EXPECT_EQ(loadScene(w, scene, sets), "");
+    for (int f = 0; f < frames; ++f) w.step();
+    unsetenv("CLOTHTEAR_LIMIT_SKIPS");
+    EXPECT_TRUE(w.finite);
+    return {stateHash(w), w.tearLog.total(), w.profile.limitTethersSkipped, w.profile.limitExpandSkipped,
+            w.profile.substeps};
+}
+
+void expectExactSkips(const std::string& scene, const std::vector<std::string>& sets, int frames, bool tethers,
+                      bool expand, bool tears) {
+    const SkipRun on = runWithSkips(true, scene, sets, frames), off = runWithSkips(false, scene, sets, frames);
+    EXPECT_EQ(on.hash, off.hash) << scene << " " << sets[0];
+    EXPECT_EQ(on.tears, off.tears);
+    EXPECT_EQ(off.tethersSkipped + off.expandSkipped, 0u);
+    if (tethers) EXPECT_GT(on.tethersSkipped, on.substeps / 10) << scene << " " << sets[0];
+    if (expand) EXPECT_GT(on.expandSkipped, on.substeps / 10) << scene << " " << sets[0];
+    if (tears) EXPECT_GT(on.tears, 0u) << scene << " " << sets[0];
+}
+
+TEST(Limit, TheSkipsOfTheTethersAndOfTheListingAfterThemChangeNoBit) {
+    auto res = [](const char* r) {
+        return std::vector<std::string>{std::string("cloth.resolution_x=") + r, std::string("cloth.resolution_y=") + r};
+    };
+    auto with = [](std::vector<std::string> sets, std::vector<std::string> more) {
+        sets.insert(sets.end(), more.begin(), more.end());
+        return sets;
+    };
+    for (const char* r : {"32", "64"}) {
+        expectExactSkips("curtain", res(r), 90, true, false, false);
+        expectExactSkips("pull", with(res(r), {"pull.angle=60", "pull.speed=2"}), 90, false, true, true);
+    }
+    // At 32 a side 10 sub-steps are within the stable step: the springs keep their stiffness and
+    // the curtain hangs on them, not on the tethers.
+    for (const char* r : {"64", "128"})
+        expectExactSkips("curtain", with(res(r), {"time.max_substeps=10"}), 60, false, true, false);
 }
 
 } // namespace

@@ -16,10 +16,11 @@ struct PeerResult {
 
 // Bullet soft-body cloth: an n x n patch of 2 m x 2 m (btSoftBodyHelpers::CreatePatch with
 // diagonals), top row of nodes fixed, the same total mass as ours (0.8 kg), randomizeConstraints(),
-// 10 sub-steps per 1/60 s frame; settled `settleSeconds`, then `measureSubsteps` sub-steps timed.
+// `substepsPerFrame` sub-steps per 1/60 s frame (10 unless asked); settled `settleSeconds`, then
+// `measureSubsteps` sub-steps timed.
 // positionIterations: Bullet's m_cfg.piterations (its link solver passes per sub-step); 0 keeps
 // Bullet's default (1). Raising it is how a Bullet user makes the cloth stretch less.
 PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int repetitions,
-                          int positionIterations = 0);
+                          int positionIterations = 0, int substepsPerFrame = 10);
 
 } // namespace clothtear::bench

@@ -35,6 +35,10 @@ struct StepProfile {
     uint64_t limitCapped = 0;
     uint64_t limitCappedSprings = 0;
     uint64_t limitPasses = 0; // passes of the length limit run, summed over sub-steps
+    // Sub-steps whose limit skipped the tethers (no spring past their reach) and whose limit skipped
+    // listing the springs the tethers' pull may have put over it (a scan found none): both exact.
+    uint64_t limitTethersSkipped = 0;
+    uint64_t limitExpandSkipped = 0;
     // Springs (structural and bend-shear) of the last spring phase that ran in groups of eight
     // evenly spaced ones (src/core/step/spring_groups.h), and their kernel ("avx2", "sse2" or
     // "generic": none grouped).

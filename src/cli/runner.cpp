@@ -108,6 +108,9 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"limit_capped_springs", w.profile.limitCappedSprings},
         {"substeps_run", w.profile.substeps},
         {"limit_passes", w.profile.limitPasses}, // passes of the length limit, summed over sub-steps
+        // sub-steps whose limit skipped the tethers / the listing after them (exact skips, limit.cpp)
+        {"limit_tethers_skipped", w.profile.limitTethersSkipped},
+        {"limit_expand_skipped", w.profile.limitExpandSkipped},
         {"spring_kernel", w.profile.springKernel}, // the spring groups' kernel (avx2, sse2, generic)
         {"grouped_springs", w.profile.groupedSprings}, // springs it ran in the last spring phase
         {"tears", tears},

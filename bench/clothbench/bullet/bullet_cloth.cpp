@@ -15,7 +15,7 @@
 namespace clothtear::bench {
 
 PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int repetitions,
-                          int positionIterations) {
+                          int positionIterations, int substepsPerFrame) {
     PeerResult r;
     r.available = true;
     r.note = "Bullet " + std::to_string(BT_BULLET_VERSION);
@@ -42,7 +42,7 @@ PeerResult runBulletCloth(int n, double settleSeconds, int measureSubsteps, int 
     r.positionIterations = cloth->m_cfg.piterations;
     cloth->randomizeConstraints();
     world->addSoftBody(cloth);
-    const btScalar dt = 1.f / 600.f; // 10 sub-steps per 1/60 s frame
+    const btScalar dt = 1.f / (60.f * float(substepsPerFrame));
     for (int i = 0; i < int(settleSeconds / dt); ++i)
         world->stepSimulation(dt, 0);
     double best = 1e300;

@@ -46,7 +46,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
+#include <string>
 
 namespace clothtear {
 
@@ -58,6 +60,11 @@ bool driversMove(const std::vector<Driver>& drivers) {
 }
 
 namespace {
+
+bool limitSkipsAllowed() {
+    const char* v = std::getenv("CLOTHTEAR_LIMIT_SKIPS");
+    return !(v && std::string(v) == "0");
+}
 
 // Lists shorter than this are worked by one thread (a barrier costs more than the work).
 constexpr size_t kSerialList = 2048;
@@ -107,6 +114,7 @@ public:
     void run();
     int cappedSprings = 0; // springs the last allowed pass still corrected (thread 0 writes it)
     int passesRun = 0;     // passes that looked at a non-empty list (thread 0 writes it)
+    bool tethersSkipped = false, expandSkipped = false; // (thread 0 writes them)
 
 private:
     // Is spring s (squared length len2) over its limit, by more than the tolerance? Springs under a
@@ -175,6 +183,8 @@ private:
     // Lists the springs of the particles in `moved` that a pass pushed over the limit. A spring
     // whose two ends both moved is listed from its lower-numbered end only.
     void expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list);
+    bool prefilterPays(size_t totalMoved) const;
+    size_t countMaybeOver(int t, int nt) const;
 
     const StepContext& ctx_;
     Cloth& cloth_;
@@ -187,6 +197,9 @@ private:
     const bool useTethers_;
     const bool gaussSeidel_;
     const bool holdsOvershoot_; // the limit holds a spring's one-step overshoot (no driver moves)
+    // The two exact skips (the tethers, expand after them); CLOTHTEAR_LIMIT_SKIPS=0 turns them off,
+    // for the test that they change no bit.
+    const bool skipsAllowed_;
     const uint32_t stamp0_;
     Vec3* x_;
     Vec3* v_;
@@ -201,6 +214,8 @@ private:
     // Per thread: did the scan see a structural spring longer than tetherReachRatio() x (1 -
     // kTetherBoundMargin) x rest? If no thread did, no tether can pull this sub-step (pullTethers).
     bool tethersMayPull_[kMaxThreadSlots] = {};
+    size_t movedCount_[kMaxThreadSlots] = {};       // particles this thread's tethers moved
+    size_t overAfterTethers_[kMaxThreadSlots] = {}; // countMaybeOver of this thread's springs
     int work_[kMaxThreadSlots] = {};
 };
 
@@ -212,7 +227,7 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       minTearSplitRest_(minTearSplitRest(cloth)),
       useTethers_(ctx.limiting),
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
-      holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)),
+      holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)), skipsAllowed_(limitSkipsAllowed()),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
@@ -284,9 +299,12 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
     if (!useTethers_) return;
     // Skipped by every thread alike when no structural spring is past the tethers' reach ratio:
     // a tether spans a path of springs, so its particle is then within reach (scan()).
-    bool mayPull = false;
+    bool mayPull = !skipsAllowed_;
     for (int k = 0; k < nt; ++k) mayPull |= tethersMayPull_[k];
-    if (!mayPull) return;
+    if (!mayPull) {
+        if (t == 0) tethersSkipped = true;
+        return;
+    }
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     // A tether's pull can stretch the particle's other springs past the limit (sideways, towards
     // another anchor): the passes must see them. The scan read the positions before the pull.
@@ -314,8 +332,47 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
             moved[keep++] = p;
         }
     moved.resize(keep);
-    parallelBarrier(nt); // stamps complete (expand reads the other end's)
+    movedCount_[t] = keep;
+    parallelBarrier(nt); // stamps and counts complete (expand reads the other end's)
+    size_t totalMoved = 0;
+    for (int k = 0; k < nt; ++k) totalMoved += movedCount_[k];
+    if (prefilterPays(totalMoved)) {
+        overAfterTethers_[t] = countMaybeOver(t, nt);
+        parallelBarrier(nt); // counts complete
+        size_t over = 0;
+        for (int k = 0; k < nt; ++k) over += overAfterTethers_[k];
+        if (over == 0) { // expand would list nothing
+            if (t == 0) expandSkipped = true;
+            return;
+        }
+    }
     expand(moved, stamp, T_.active[t]);
+}
+
+// The tethers moved `totalMoved` particles; expand reads the structural springs of each (about six,
+// each spring from both ends) through the particle-spring table, scattered. When the tethers moved
+// much of the cloth (a cloth hanging on them: the 6 m scenes, a hand's pull, a 128 x 128 curtain at
+// 1/600 s, where expand was 27 % of the sub-step), one pass of the scan's kernel over every spring,
+// in memory order and four at a time, usually finds that none of them is over the limit, and
+// expand is skipped.
+bool LimitSolve::prefilterPays(size_t totalMoved) const {
+    return skipsAllowed_ && 4 * totalMoved >= cloth_.particleCount();
+}
+
+// How many of this thread's share of the structural springs, not on a list yet, may be over the
+// limit after the tethers pulled. The bar is the lower of the two limits less kPrefilterMargin, far
+// above the round-off between the kernel's squared length (from the packed copy, which the tethers
+// keep equal to x) and overLimit's: a spring expand would list is always counted, so a count of 0
+// over all threads means expand would list nothing.
+size_t LimitSolve::countMaybeOver(int t, int nt) const {
+    const SpringCache& S = state_.springs;
+    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), S.k.data(), S.kd.data()};
+    const float bar = std::min(doneRatio_, heldDoneRatio_) * (1.f - kPrefilterMargin);
+    const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
+    size_t count = 0;
+    scanSprings(arrays, sc.begin, sc.end, bar, 0.f, state_.packed.data(),
+                [&](size_t e, float) { count += listed_[S.index[e]] == 0; });
+    return count;
 }
 
 int LimitSolve::countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched) {
@@ -519,6 +576,8 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     LimitSolve solve(ctx, cloth, state);
     solve.run();
     ctx.profile->limitPasses += uint64_t(solve.passesRun);
+    ctx.profile->limitTethersSkipped += solve.tethersSkipped;
+    ctx.profile->limitExpandSkipped += solve.expandSkipped;
     if (solve.cappedSprings > 0) {
         ctx.profile->limitCapped++;
         ctx.profile->limitCappedSprings += uint64_t(solve.cappedSprings);

@@ -30,6 +30,11 @@ inline constexpr float kTetherSlack = 1e-2f;
 // strain 0.08) that is every sub-step, and the tethers' checks were 14 % of it at 128 x 128.
 inline constexpr float kTetherBoundMargin = 1e-4f;
 
+// The count of the springs a tether pull may have put over the limit (limit.cpp, countMaybeOver)
+// takes every spring past the limit less this fraction: a superset of those over it, with room for
+// the round-off between two ways of computing a squared length (~1e-6 relative).
+inline constexpr float kPrefilterMargin = 1e-5f;
+
 // What addCorrection needs, fixed for the sub-step.
 struct CorrectionParams {
     float relaxation;    // limit.relaxation
