@@ -66,6 +66,9 @@ bool limitSkipsAllowed() {
     return !(v && std::string(v) == "0");
 }
 
+// Sub-steps the expand prefilter rests after it found springs over the limit (prefilterPays).
+constexpr uint32_t kPrefilterWait = 4;
+
 // Lists shorter than this are worked by one thread (a barrier costs more than the work).
 constexpr size_t kSerialList = 2048;
 
@@ -115,6 +118,7 @@ public:
     int cappedSprings = 0; // springs the last allowed pass still corrected (thread 0 writes it)
     int passesRun = 0;     // passes that looked at a non-empty list (thread 0 writes it)
     bool tethersSkipped = false, expandSkipped = false; // (thread 0 writes them)
+    bool prefilterFailed = false; // the prefilter ran and found springs over: expand ran anyway
 
 private:
     // Is spring s (squared length len2) over its limit, by more than the tolerance? Springs under a
@@ -345,6 +349,7 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
             if (t == 0) expandSkipped = true;
             return;
         }
+        if (t == 0) prefilterFailed = true;
     }
     expand(moved, stamp, T_.active[t]);
 }
@@ -355,8 +360,9 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
 // 1/600 s, where expand was 27 % of the sub-step), one pass of the scan's kernel over every spring,
 // in memory order and four at a time, usually finds that none of them is over the limit, and
 // expand is skipped.
+// After a sub-step whose scan found springs over, the next kPrefilterWait do not try.
 bool LimitSolve::prefilterPays(size_t totalMoved) const {
-    return skipsAllowed_ && 4 * totalMoved >= cloth_.particleCount();
+    return skipsAllowed_ && C_.prefilterWait == 0 && 4 * totalMoved >= cloth_.particleCount();
 }
 
 // How many of this thread's share of the structural springs, not on a list yet, may be over the
@@ -578,6 +584,9 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     ctx.profile->limitPasses += uint64_t(solve.passesRun);
     ctx.profile->limitTethersSkipped += solve.tethersSkipped;
     ctx.profile->limitExpandSkipped += solve.expandSkipped;
+    LimitCache& C = state.limit;
+    if (solve.prefilterFailed) C.prefilterWait = kPrefilterWait;
+    else if (C.prefilterWait > 0) --C.prefilterWait;
     if (solve.cappedSprings > 0) {
         ctx.profile->limitCapped++;
         ctx.profile->limitCappedSprings += uint64_t(solve.cappedSprings);

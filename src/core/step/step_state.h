@@ -99,6 +99,10 @@ struct LimitCache {
     // (all 0 between sub-steps).
     std::vector<uint8_t> candidate;
     uint32_t passStamp = 0;      // last pass stamp used
+    // Sub-steps before the limit tries its expand prefilter again after one that found springs over
+    // the limit (limit.cpp, prefilterPays: a hand dragging the cloth sideways makes every tether
+    // pull put some over, and the scan is then wasted). Only speed depends on it, never a result.
+    uint32_t prefilterWait = 0;
 };
 
 struct ImplicitEulerCache; // implicit_euler.h
