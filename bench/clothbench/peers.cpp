@@ -4,7 +4,8 @@
 //
 // Ours: the `curtain` scene (2 m x 2 m, top edge pinned, default material, tearing on, 10 sub-steps
 // per 1/60 s frame) settled for 1.5 s, then World::substep() timed; fastest of 5 repetitions, on 1
-// thread and on --threads threads. Bullet: see peers.h (single-threaded).
+// thread and on --threads threads. Bullet: see peers.h (single-threaded). A second table times both
+// at the step our default takes for the cloth (compareAtDefaultStep).
 //
 // The bandwidth bound of a sub-step: the bytes of every array the sub-step must read or write,
 // each counted once per pass that touches it, divided by the measured triad bandwidth:
