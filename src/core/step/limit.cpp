@@ -482,6 +482,9 @@ void LimitSolve::passes(int t, int nt) {
     }
     for (int pass = 0; pass < iterations_; ++pass) {
         const uint32_t stamp = stamp0_ + uint32_t(pass) + 1;
+        // After the last allowed pass nothing reads the lists but to empty them: no expand (under a
+        // moving hand every sub-step runs to the cap, and expand costs several times the pass).
+        const bool another = pass + 1 < iterations_;
         listSize_[t] = list.size();
         parallelBarrier(nt); // lists, positions and listSize_[] complete
         size_t total = 0;
@@ -493,7 +496,7 @@ void LimitSolve::passes(int t, int nt) {
             if (t == 0) {
                 moved[0].clear();
                 work_[0] = gaussSeidelPass(active[0], pass % 2 == 1, stamp, moved[0]);
-                expand(moved[0], stamp, active[0]);
+                if (another) expand(moved[0], stamp, active[0]);
                 for (int k = 1; k < nt; ++k) work_[k] = 0;
             }
         } else if (total < kSerialList || nt == 1) {
@@ -506,7 +509,7 @@ void LimitSolve::passes(int t, int nt) {
                 moved[0].clear();
                 applyCorrections(touched, corr, corrV, 1, [](Index) { return true; }, x_, v_, movedIn_, stamp,
                                  moved[0]);
-                expand(moved[0], stamp, active[0]);
+                if (another) expand(moved[0], stamp, active[0]);
                 work_[0] = corrected;
                 for (int k = 1; k < nt; ++k) work_[k] = 0;
             }
@@ -520,7 +523,7 @@ void LimitSolve::passes(int t, int nt) {
             auto mine = [&](Index p) { return p >= pc.begin && p < pc.end; };
             applyCorrections(touched, corr, corrV, nt, mine, x_, v_, movedIn_, stamp, moved[t]);
             parallelBarrier(nt); // positions and stamps complete
-            expand(moved[t], stamp, list);
+            if (another) expand(moved[t], stamp, list);
         }
         parallelBarrier(nt); // work_[] complete
         int corrected = 0;
