@@ -448,18 +448,27 @@ int LimitSolve::gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32
 }
 
 void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list) {
-    for (Index p : moved)
-        for (uint32_t k = C_.springStart[p]; k < C_.springStart[p + 1]; ++k) {
-            const Index i = C_.springOf[k];
+    // overLimit, from the particle-spring table's other end and rest length: the spring itself is
+    // not read (|x_q - x_p|^2 is |x_b - x_a|^2 to the bit).
+    const uint32_t* start = C_.springStart.data();
+    const Index* springOf = C_.springOf.data();
+    const Index* otherEnd = C_.otherEnd.data();
+    const float* restOf = C_.restOf.data();
+    for (Index p : moved) {
+        const Vec3 xp = x_[p];
+        const uint8_t fp = flags_[p];
+        for (uint32_t k = start[p]; k < start[p + 1]; ++k) {
+            const Index i = springOf[k];
             if (listed_[i]) continue;
-            const Spring& s = springs_[i];
-            const Index q = s.a == p ? s.b : s.a;
+            const Index q = otherEnd[k];
             if (q < p && movedIn_[q] == stamp) continue;
-            if (overLimit(s, (x_[s.b] - x_[s.a]).squaredNorm())) {
+            const float ratio = ((fp | flags_[q]) & kTouched) ? heldDoneRatio_ : doneRatio_;
+            if ((x_[q] - xp).squaredNorm() > sq(restOf[k] * ratio)) {
                 listed_[i] = 1;
                 list.push_back(i);
             }
         }
+    }
 }
 
 // Jacobi passes over the listed springs, until none is over the limit or limit.iterations ran.

@@ -89,9 +89,12 @@ struct LimitCache {
     std::array<TetherSet, kTetherSets> tethers;
     uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
     float meanRest = 0;        // m, mean rest length of the structural springs
-    // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]).
+    // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]), and beside
+    // each its other end and rest length (what the limit's listing reads, without the spring).
     std::vector<uint32_t> springStart;
     std::vector<Index> springOf;
+    std::vector<Index> otherEnd;
+    std::vector<float> restOf; // m
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
     std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)

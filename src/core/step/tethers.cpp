@@ -86,9 +86,16 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     for (size_t p = 0; p < n; ++p) start[p + 1] += start[p];
     std::vector<uint32_t> fill(start.begin(), start.end() - 1);
     t.springOf.resize(start[n]);
+    t.otherEnd.resize(start[n]);
+    t.restOf.resize(start[n]);
     for (Index i = 0; i < cloth.springs.size(); ++i) {
-        t.springOf[fill[cloth.springs[i].a]++] = i;
-        t.springOf[fill[cloth.springs[i].b]++] = i;
+        const Spring& s = cloth.springs[i];
+        for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
+            const uint32_t k = fill[end]++;
+            t.springOf[k] = i;
+            t.otherEnd[k] = other;
+            t.restOf[k] = s.rest;
+        }
     }
     t.moved.assign(n, 0);
     t.passStamp = 0;
