@@ -5,6 +5,9 @@
 //   BM_Substep/RES/TEAR/THREADS   one sub-step; springs/s counts structural + bend-shear springs
 //   BM_StrainScan/RES/TEAR/THREADS  one sub-step with Provot limiting off: what the strain scan alone
 //                                 costs (tear=1 enters the limit phase only for the scan)
+//   BM_SubstepOnLimit/RES/THREADS one sub-step at 1/600 s (10 a frame: the guard softens the springs
+//                                 of a cloth this fine and it hangs on its tethers and the length
+//                                 limit, as the 6 m scenes and a hand's pull do at their steps)
 //   BM_Phases/RES/THREADS         per-phase ms of one sub-step, from World::profile
 //   BM_Frame/RES/THREADS          one 1/60 s frame (10 sub-steps + bookkeeping); sim_s/s > 1 is
 //                                 faster than real time
@@ -95,6 +98,25 @@ void BM_StrainScan(benchmark::State& state) {
     commonCounters(state, w);
 }
 
+void BM_SubstepOnLimit(benchmark::State& state) {
+    const int res = int(state.range(0));
+    ThreadScope threads(int(state.range(1)));
+    World w = settledCurtain({res, true});
+    w.settings.time.substeps = 10; // World::substep()'s dt: 1/600 s
+    for (int i = 0; i < 300; ++i) w.substep(); // half a second to settle onto the limit (untimed)
+    w.profile.reset();
+    for (auto _ : state) {
+        w.substep();
+        benchmark::ClobberMemory();
+    }
+    const StepProfile& p = w.profile;
+    const double n = double(std::max<uint64_t>(p.substeps, 1));
+    state.counters["limit_ms"] = p.ms[int(Phase::Limit)] / n;
+    state.counters["tethers_skipped"] = double(p.limitTethersSkipped) / n; // share of sub-steps
+    state.counters["expand_skipped"] = double(p.limitExpandSkipped) / n;
+    commonCounters(state, w);
+}
+
 void BM_Phases(benchmark::State& state) {
     const int res = int(state.range(0));
     ThreadScope threads(int(state.range(1)));
@@ -137,6 +159,12 @@ BENCHMARK(BM_Substep)
 BENCHMARK(BM_StrainScan)
     ->ArgNames({"res", "tear", "threads"})
     ->ArgsProduct({{128}, {0, 1}, {1, 2}})
+    ->UseRealTime()
+    ->ComputeStatistics("min", fastest)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SubstepOnLimit)
+    ->ArgNames({"res", "threads"})
+    ->ArgsProduct({{64, 128}, {1, 2}})
     ->UseRealTime()
     ->ComputeStatistics("min", fastest)
     ->Unit(benchmark::kMicrosecond);
