@@ -158,13 +158,18 @@ int World::guardSubsteps() {
     const Revisions& now = state.revisions.observe(*this); // the estimate does not depend on dt
     GuardCache& G = state.guard;
     if (!G.stamp.fresh(now, GuardCache::kDeps)) {
-        G.stableStep = guardStepEstimate(cloth, settings, kGuardLightMass);
-        G.capsKnown = false;
+        G.stableKnown = G.capsKnown = false;
         G.stamp.set(now);
     }
+    // Each estimate only when a frame needs it: while a hand tears the cloth every tear changes the
+    // topology, and the budget's step, unused then, was half the guard's cost.
     if (state.interacting && !G.capsKnown) {
         G.capsStep = guardStepEstimate(cloth, settings, kGuardLightMass, true);
         G.capsKnown = true;
+    }
+    if (!state.interacting && !G.stableKnown) {
+        G.stableStep = guardStepEstimate(cloth, settings, kGuardLightMass);
+        G.stableKnown = true;
     }
     const double need = std::ceil(double(T.frameDt) / (state.interacting ? G.capsStep : G.stableStep));
     return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need));

@@ -139,7 +139,8 @@ struct WindCache {
 struct GuardCache {
     static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial;
     CacheStamp stamp;
-    bool capsKnown = false; // capsStep is computed the first time a frame interacts
+    bool stableKnown = false; // stableStep is computed the first time a frame does not interact
+    bool capsKnown = false;   // capsStep is computed the first time a frame interacts
     double stableStep = 0; // s, the guard's step within the particle budget
     double capsStep = 0;   // s, the step without per-spring caps (while interacting, step.cpp)
 };
