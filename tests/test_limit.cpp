@@ -251,9 +251,15 @@ void expectExactSkips(const std::string& scene, const std::vector<std::string>& 
     EXPECT_EQ(on.hash, off.hash) << scene << " " << sets[0];
     EXPECT_EQ(on.tears, off.tears);
     EXPECT_EQ(off.tethersSkipped + off.expandSkipped, 0u);
-    if (tethers) EXPECT_GT(on.tethersSkipped, on.substeps / 10) << scene << " " << sets[0];
-    if (expand) EXPECT_GT(on.expandSkipped, on.substeps / 10) << scene << " " << sets[0];
-    if (tears) EXPECT_GT(on.tears, 0u) << scene << " " << sets[0];
+    if (tethers) {
+        EXPECT_GT(on.tethersSkipped, on.substeps / 10) << scene << " " << sets[0];
+    }
+    if (expand) {
+        EXPECT_GT(on.expandSkipped, on.substeps / 10) << scene << " " << sets[0];
+    }
+    if (tears) {
+        EXPECT_GT(on.tears, 0u) << scene << " " << sets[0];
+    }
 }
 
 TEST(Limit, TheSkipsOfTheTethersAndOfTheListingAfterThemChangeNoBit) {

@@ -169,7 +169,9 @@ TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
             ASSERT_GE(rips[k].tears, 5u) << angle << " deg at " << res[k];
             EXPECT_LT(std::min(rips[k].axisDeg, 180.0 - rips[k].axisDeg), 20.0) << angle << " deg at " << res[k];
             EXPECT_GT(rips[k].length, 1.0) << angle << " deg at " << res[k]; // a rip, not the hand torn out (0.6 m across)
-            if (angle < 60) EXPECT_GT(rips[k].smallestPiece, 0.1) << angle << " deg at " << res[k];
+            if (angle < 60) {
+                EXPECT_GT(rips[k].smallestPiece, 0.1) << angle << " deg at " << res[k];
+            }
         }
         EXPECT_NEAR(rips[1].firstTime, rips[0].firstTime, 0.1 * rips[0].firstTime) << angle << " deg";
         if (angle >= 60) continue;
