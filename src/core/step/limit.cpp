@@ -124,8 +124,10 @@ private:
     // Is spring s (squared length len2) over its limit, by more than the tolerance? Springs under a
     // ball may stretch up to the tear threshold: the ball, not the limit, decides where they are.
     bool underBall(const Spring& s) const { return ((flags_[s.a] | flags_[s.b]) & kTouched) != 0; }
-    bool overLimit(const Spring& s, float len2) const {
-        return len2 > sq(s.rest * (underBall(s) ? heldDoneRatio_ : doneRatio_));
+    bool overLimit(const Spring& s, float len2) const { return overLimit(flags_[s.a] | flags_[s.b], s.rest, len2); }
+    // The same from the ends' flags (or-ed) and the rest length.
+    bool overLimit(uint8_t endFlags, float rest, float len2) const {
+        return len2 > sq(rest * ((endFlags & kTouched) ? heldDoneRatio_ : doneRatio_));
     }
     // The ratio at which spring s tears (tearStrainFor): a hem first, then a weak end.
     float tearRatioOf(const Spring& s) const {
@@ -251,7 +253,8 @@ void LimitSolve::scan(int t, int nt) {
     std::vector<TearCandidate>& found = T_.found[t];
     const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
     const float watchRatio = useTethers_ ? tetherReachRatio() * (1.f - kTetherBoundMargin) : 0.f;
-    tethersMayPull_[t] = scanSprings(arrays, sc.begin, sc.end, scanRatio, watchRatio, state_.packed.data(), [&](size_t e, float len2) {
+    const PackedParticle* packed = state_.packed.data();
+    tethersMayPull_[t] = scanSprings(arrays, sc.begin, sc.end, scanRatio, watchRatio, packed, [&](size_t e, float len2) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
         if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
@@ -462,8 +465,7 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::ve
             if (listed_[i]) continue;
             const Index q = otherEnd[k];
             if (q < p && movedIn_[q] == stamp) continue;
-            const float ratio = ((fp | flags_[q]) & kTouched) ? heldDoneRatio_ : doneRatio_;
-            if ((x_[q] - xp).squaredNorm() > sq(restOf[k] * ratio)) {
+            if (overLimit(fp | flags_[q], restOf[k], (x_[q] - xp).squaredNorm())) {
                 listed_[i] = 1;
                 list.push_back(i);
             }
