@@ -33,6 +33,11 @@ struct SpringArrays {
     const float* kd;   // N s/m, after the stability guard
 };
 
+// The spring cache's arrays as the kernels read them.
+inline SpringArrays springArraysOf(const SpringCache& S) {
+    return {S.a16.data(), S.b16.data(), S.rest.data(), S.k.data(), S.kd.data()};
+}
+
 inline const PackedParticle& packedAt(const PackedParticle* xv, uint32_t off16) {
     return xv[off16 >> 4];
 }

@@ -246,13 +246,14 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
 // into found[t], springs over the limit onto this thread's list.
 void LimitSolve::scan(int t, int nt) {
     const SpringCache& S = state_.springs;
-    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), S.k.data(), S.kd.data()};
+    const SpringArrays arrays = springArraysOf(S);
     // The scan flags springs over the limit and those over a tear threshold (which may be lower).
     const float scanRatio = std::min(ctx_.limiting ? doneRatio_ : 1e30f, minTearRatio_);
     std::vector<Index>& list = T_.active[t];
     std::vector<TearCandidate>& found = T_.found[t];
     const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
-    const float watchRatio = useTethers_ ? tetherReachRatio() * (1.f - kTetherBoundMargin) : 0.f;
+    // Read only where the tethers pull (pullTethers).
+    const float watchRatio = tetherReachRatio() * (1.f - kTetherBoundMargin);
     const PackedParticle* packed = state_.packed.data();
     tethersMayPull_[t] = scanSprings(arrays, sc.begin, sc.end, scanRatio, watchRatio, packed, [&](size_t e, float len2) {
         const Index i = S.index[e];
@@ -270,7 +271,6 @@ void LimitSolve::scan(int t, int nt) {
             list.push_back(Index(i));
         }
     });
-    if (!useTethers_) tethersMayPull_[t] = false;
 }
 
 // Thread 0, after the scan: the tethers that must not pull (their path runs through a candidate or a
@@ -375,7 +375,7 @@ bool LimitSolve::prefilterPays(size_t totalMoved) const {
 // over all threads means expand would list nothing.
 size_t LimitSolve::countMaybeOver(int t, int nt) const {
     const SpringCache& S = state_.springs;
-    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), S.k.data(), S.kd.data()};
+    const SpringArrays arrays = springArraysOf(S);
     const float bar = std::min(doneRatio_, heldDoneRatio_) * (1.f - kPrefilterMargin);
     const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
     size_t count = 0;

@@ -256,7 +256,7 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
         }
     }
     for (int t = 0; t < nt; ++t) state.threads.range[t] = S.threadRange[t];
-    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), S.k.data(), S.kd.data()};
+    const SpringArrays arrays = springArraysOf(S);
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
     PackedParticle* packed = state.packed.data();
