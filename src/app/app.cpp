@@ -92,6 +92,8 @@ int App::run(const AppOptions& options) {
         return 2;
     }
     openSound();
+    state_.pipeline = !options.noPipeline;
+    simThread_.emplace();
     state_.requestResetView = true;
     {
         const View v = currentView();
@@ -277,35 +279,50 @@ void App::frame(bool last) {
     drawTimeline(state_, rewind_);
     drawHelpOverlay(state_);
     serveRequests();
-    simulate(realSeconds);
-    audioOut_.setMuted(state_.sound.muted);
-    audioOut_.setVolume(state_.sound.volume);
+    // The pipeline: the steps of this frame run on the simulation thread while the main thread draws
+    // the world as the last frame left it (one frame later on screen). The renderer reads the world
+    // only inside draw(): GL copies what it uploads, so the thread may step the world once draw()
+    // returned. The steps see the same input on the same state either way (this frame's events were
+    // handled above, on the state the last frame's steps left), so a replay gives the same world.
+    // The last frame steps first: its screenshot and report show the final state.
+    const int steps = stepsThisFrame(realSeconds);
+    const bool overlap = state_.pipeline && steps > 0 && !last && !state_.requestExportObj;
+    if (!overlap) runSteps(steps);
 
     const View view = currentView();
     drawToolHud(state_, world_, view, input_.mouseX, input_.mouseY, uiMouse);
     ImGui::Render();
-    const double drawStart = glfwGetTime();
-    int fbWidth = 0, fbHeight = 0;
-    glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
-    renderer_.draw(world_, state_.render, view, fbWidth, fbHeight);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    const double drawEnd = glfwGetTime();
-    if (last && !options_.screenshot.empty())
-        if (std::string err = writeScreenshot(options_.screenshot); !err.empty()) std::cerr << "clothtear: " << err << "\n";
     if (state_.requestExportObj) {
         state_.requestExportObj = false;
         const std::string name = "clothtear-" + std::to_string(state_.frame) + ".obj";
         state_.say(saveObj(clothMesh(world_.cloth), name) ? "Exported the cloth to " + name
                                                           : "Cannot write " + name + "; nothing exported");
     }
+    const double drawStart = glfwGetTime();
+    int fbWidth = 0, fbHeight = 0;
+    glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
+    renderer_.draw(world_, state_.render, view, fbWidth, fbHeight);
+    // From here until simThread_.wait() the world, the tools' drag state, the history and the sound
+    // stream are the simulation thread's (sim_thread.h): nothing below reads them.
+    if (overlap) simThread_->start([this, steps] { runSteps(steps); });
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const double drawEnd = glfwGetTime();
+    if (last && !options_.screenshot.empty())
+        if (std::string err = writeScreenshot(options_.screenshot); !err.empty()) std::cerr << "clothtear: " << err << "\n";
+    std::string screenshotSaid;
     if (state_.requestScreenshot) {
         state_.requestScreenshot = false;
         const std::string name = "clothtear-" + std::to_string(state_.frame) + ".png";
         const std::string err = writeScreenshot(name);
-        state_.say(err.empty() ? "Saved " + name : err);
+        screenshotSaid = err.empty() ? "Saved " + name : err;
     }
     glfwSwapBuffers(window_);
     const double swapEnd = glfwGetTime();
+    if (overlap) simThread_->wait();
+    afterSteps();
+    if (!screenshotSaid.empty()) state_.say(screenshotSaid);
+    audioOut_.setMuted(state_.sound.muted);
+    audioOut_.setVolume(state_.sound.volume);
     state_.stats.drawMs = 0.9 * state_.stats.drawMs + 0.1 * 1000.0 * (drawEnd - drawStart);
     state_.stats.swapMs = 0.9 * state_.stats.swapMs + 0.1 * 1000.0 * (swapEnd - drawEnd);
     state_.stats.clothTrianglesDrawn = renderer_.clothTriangles();

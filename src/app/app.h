@@ -11,6 +11,7 @@
 #include "input_state.h"
 #include "renderer.h"
 #include "rewind.h"
+#include "sim_thread.h"
 #include "sound_stream.h"
 
 #include <nlohmann/json.hpp>
@@ -55,7 +56,12 @@ private:
     // `message`, with what sceneWarnings says about the world appended (every particle pinned).
     std::string withWarnings(std::string message) const;
     void rebuildWorld();
-    void simulate(double realSeconds);
+    // How many steps this frame takes: one in lockstep, what the real-time clock owes, none paused
+    // (but a single step asked for).
+    int stepsThisFrame(double realSeconds);
+    // The frame's steps: on the main thread, or on simThread_ while the frame before is drawn.
+    void runSteps(int steps);
+    void afterSteps(); // on the main thread once the steps are done: a blow-up pauses and says so
     void stepOnce();
     // After a step: the frame's sound to the device and, with --audio-out, to the soundtrack.
     void feedSound();
@@ -71,6 +77,9 @@ private:
     Rewind rewind_; // the timeline and the undo of tears (rewind.h)
     AppState state_;
     Renderer renderer_;
+    // The frame's steps while the frame before is drawn (frame(), sim_thread.h); made in run(), after
+    // main() chose the OpenMP team size.
+    std::optional<SimThread> simThread_;
     // sound: the world's tears as a stream (rebased when the world is replaced or restored), played
     // live through audioOut_ and, with --audio-out, kept whole for the WAV written at exit
     std::optional<audio::SoundStream> sound_;

@@ -12,6 +12,9 @@ struct AppOptions : RunOptions {
     std::string screenshot; // --screenshot FILE: a PNG of the last frame
     std::string script;     // --script FILE: replay an input script (src/input/input_script.h)
     std::string record;     // --record FILE: record the input to a script
+    // --no-pipeline: step, then draw what was stepped, one after the other, instead of stepping the
+    // frame while the frame before it is drawn (app.cpp [FRAME], sim_thread.h)
+    bool noPipeline = false;
 };
 
 // parseRunOptions with the app's options added. Returns -1 to go on, or an exit status (0 after

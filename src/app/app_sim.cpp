@@ -68,17 +68,21 @@ std::string App::withWarnings(std::string message) const {
     return message.empty() ? "Warning: " + warning : message + " (warning: " + warning + ")";
 }
 
-void App::simulate(double realSeconds) {
-    int steps = 0;
+int App::stepsThisFrame(double realSeconds) {
     if (state_.paused) {
         state_.clock.reset();
-        if (state_.stepRequests > 0) steps = 1, state_.stepRequests--;
-    } else if (lockstep_) {
-        steps = 1;
-    } else {
-        steps = state_.clock.advance(realSeconds, world_.settings.time.frameDt);
+        if (state_.stepRequests > 0) return state_.stepRequests--, 1;
+        return 0;
     }
+    if (lockstep_) return 1;
+    return state_.clock.advance(realSeconds, world_.settings.time.frameDt);
+}
+
+void App::runSteps(int steps) {
     for (int i = 0; i < steps && world_.finite; ++i) stepOnce();
+}
+
+void App::afterSteps() {
     // A blown-up state only gets slower to step (NaN springs tear without end): stop and say so.
     if (!world_.finite && !state_.paused) {
         state_.paused = true;

@@ -89,6 +89,9 @@ struct AppState {
     SoundOptions sound;
     // ---- simulation control
     bool paused = false;
+    // The pipeline (app.cpp [FRAME]): a frame's steps run on the simulation thread while the frame
+    // before them is drawn. Off (--no-pipeline, or the stats pane): step, then draw.
+    bool pipeline = true;
     int stepRequests = 0;     // single steps asked for while paused
     bool allowUnsafe = false; // sliders span the hard ranges instead of the safe ones (Keserica 6.2)
     SimClock clock;
