@@ -281,8 +281,8 @@ void App::frame(bool last) {
     serveRequests();
     // The pipeline: the steps of this frame run on the simulation thread while the main thread draws
     // the world as the last frame left it (one frame later on screen). The renderer reads the world
-    // only inside draw(): GL copies what it uploads, so the thread may step the world once draw()
-    // returned. The steps see the same input on the same state either way (this frame's events were
+    // only in prepare(): GL copies what it uploads, so the thread may step the world once prepare()
+    // returned, while submit() issues the draws. The steps see the same input on the same state either way (this frame's events were
     // handled above, on the state the last frame's steps left), so a replay gives the same world.
     // The last frame steps first: its screenshot and report show the final state.
     const int steps = stepsThisFrame(realSeconds);
@@ -301,10 +301,11 @@ void App::frame(bool last) {
     const double drawStart = glfwGetTime();
     int fbWidth = 0, fbHeight = 0;
     glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
-    renderer_.draw(world_, state_.render, view, fbWidth, fbHeight);
+    renderer_.prepare(world_, state_.render, view);
     // From here until simThread_.wait() the world, the tools' drag state, the history and the sound
     // stream are the simulation thread's (sim_thread.h): nothing below reads them.
     if (overlap) simThread_->start([this, steps] { runSteps(steps); });
+    renderer_.submit(fbWidth, fbHeight);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     const double drawEnd = glfwGetTime();
     if (last && !options_.screenshot.empty())

@@ -2,7 +2,8 @@
 //
 // Section index:
 //   [INIT]      programs, buffers, the sphere mesh, textures
-//   [FRAME]     draw(): clear, ground, cloth (its shadow first), torn threads, balls, overlays
+//   [FRAME]     prepare() (reads the world, uploads) and submit(): clear, ground, the cloth's shadow,
+//               cloth, torn threads, balls, overlays
 //   [CLOTH]     render-mesh upload (topology only on revision change), lighting uniforms, the shadow,
 //               the fringe of torn threads
 //   [OVERLAYS]  structural / bend-shear springs as lines, weak and pinned particles as points
@@ -44,6 +45,7 @@ std::string Renderer::init() {
     glGenBuffers(1, &clothDynamicVbo_);
     glGenBuffers(1, &clothUvVbo_);
     glGenBuffers(1, &clothEbo_);
+    glGenBuffers(1, &clothCoarseEbo_);
     glBindVertexArray(clothVao_);
     glBindBuffer(GL_ARRAY_BUFFER, clothDynamicVbo_);
     static_assert(kDynamicFloats == 3 + 3 + 1, "position, normal, strain");
@@ -143,8 +145,9 @@ void Renderer::setTexture(const Image& image) {
 void Renderer::shutdown() {
     for (GLuint p : {clothProgram_, clothInspectProgram_, litProgram_, groundProgram_, linesProgram_, fringeProgram_, shadowProgram_})
         if (p) glDeleteProgram(p);
-    const GLuint buffers[] = {clothUvVbo_, clothDynamicVbo_, clothEbo_,  particleVbo_, structuralEbo_, bendEbo_,
-                              pointsEbo_,  groundVbo_,       sphereVbo_, sphereEbo_,   fringeVbo_,     fringeEbo_};
+    const GLuint buffers[] = {clothUvVbo_, clothDynamicVbo_, clothEbo_,  clothCoarseEbo_, particleVbo_, structuralEbo_,
+                              bendEbo_,    pointsEbo_,       groundVbo_, sphereVbo_,      sphereEbo_,   fringeVbo_,
+                              fringeEbo_};
     glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
     const GLuint arrays[] = {clothVao_, overlayVao_, groundVao_, sphereVao_, fringeVao_};
     glDeleteVertexArrays(GLsizei(std::size(arrays)), arrays);
@@ -154,7 +157,21 @@ void Renderer::shutdown() {
 
 // ============================================================================================ [FRAME]
 
-void Renderer::draw(const World& world, const RenderOptions& o, const View& view, int fbWidth, int fbHeight) {
+void Renderer::prepare(const World& world, const RenderOptions& o, const View& view) {
+    frame_.options = o;
+    frame_.view = view;
+    frame_.ground = world.settings.collision.ground;
+    frame_.groundHeight = world.settings.collision.groundHeight;
+    frame_.strainMax = world.settings.tear.enabled ? world.settings.tear.threshold : 0.5f;
+    prepareCloth(world);
+    prepareFringe(world);
+    frame_.balls.clear();
+    for (const Ball& b : world.balls) frame_.balls.emplace_back(b.x, b.radius);
+    prepareOverlays(world);
+}
+
+void Renderer::submit(int fbWidth, int fbHeight) {
+    const RenderOptions& o = frame_.options;
     glViewport(0, 0, fbWidth, fbHeight);
     glClearColor(o.sky[0], o.sky[1], o.sky[2], 1.f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -162,11 +179,12 @@ void Renderer::draw(const World& world, const RenderOptions& o, const View& view
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE); // cloth is two-sided
     glDisable(GL_BLEND);
-    if (world.settings.collision.ground) drawGround(world, o, view);
-    drawCloth(world, o, view); // draws the shadow first, from the buffers it has just filled
-    drawFringe(world, o, view);
-    drawBalls(world, o, view);
-    drawOverlays(world, o, view);
+    if (frame_.ground) drawGround();
+    if (frame_.shadow) drawShadow(); // over the ground, under the cloth
+    drawCloth();
+    drawFringe();
+    drawBalls();
+    drawOverlays();
     glBindVertexArray(0);
 }
 
@@ -176,7 +194,9 @@ Renderer::DrawnState Renderer::drawnState(const World& world, bool strain) {
     return DrawnState{world.steps, world.cloth.topologyRevision, world.time, world.cloth.particleCount(), strain};
 }
 
-void Renderer::setLighting(GLuint program, const RenderOptions& o, const View& view) {
+void Renderer::setLighting(GLuint program) {
+    const RenderOptions& o = frame_.options;
+    const View& view = frame_.view;
     Vec3 l(o.lightDir[0], o.lightDir[1], o.lightDir[2]);
     if (l.squaredNorm() < 1e-12f) l = Vec3::UnitY();
     setVec3(program, "uLightDir", Vec3(l.normalized()));
@@ -188,11 +208,13 @@ void Renderer::setLighting(GLuint program, const RenderOptions& o, const View& v
     setMat4(program, "uViewProj", view.viewProjection.data());
 }
 
-void Renderer::drawGround(const World& world, const RenderOptions& o, const View& view) {
+void Renderer::drawGround() {
+    const RenderOptions& o = frame_.options;
+    const View& view = frame_.view;
     glUseProgram(groundProgram_);
-    setLighting(groundProgram_, o, view);
+    setLighting(groundProgram_);
     const float extent = std::max(60.f, view.camera.distance * 6.f);
-    setFloat(groundProgram_, "uHeight", world.settings.collision.groundHeight);
+    setFloat(groundProgram_, "uHeight", frame_.groundHeight);
     glUniform2f(uniform(groundProgram_, "uCenter"), std::round(view.camera.target.x()), std::round(view.camera.target.z()));
     setFloat(groundProgram_, "uExtent", extent);
     setFloat(groundProgram_, "uFadeDistance", extent * 0.9f);
@@ -209,21 +231,24 @@ void Renderer::drawGround(const World& world, const RenderOptions& o, const View
 
 // ============================================================================================ [CLOTH]
 
-void Renderer::drawCloth(const World& world, const RenderOptions& o, const View& view) {
+void Renderer::prepareCloth(const World& world) {
     const Cloth& cloth = world.cloth;
-    if (cloth.triangles.empty()) return;
+    const RenderOptions& o = frame_.options;
+    const View& view = frame_.view;
+    frame_.cloth = !cloth.triangles.empty();
+    frame_.shadow = false;
+    drawCount_ = 0;
+    if (!frame_.cloth) return;
     glBindVertexArray(clothVao_);
     if (mesh_.stale(cloth)) {
         // Topology changed (a tear, a rebuild): new render vertices, uvs and indices.
         mesh_.rebuild(cloth);
         glBindBuffer(GL_ARRAY_BUFFER, clothUvVbo_);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh_.uv.size() * sizeof(float)), mesh_.uv.data(), GL_STATIC_DRAW);
-        coarse_ = coarseGridIndices(cloth, mesh_);
-        const size_t fineBytes = mesh_.indices.size() * sizeof(uint32_t), coarseBytes = coarse_.size() * sizeof(uint32_t);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothEbo_);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(fineBytes + coarseBytes), nullptr, GL_STATIC_DRAW);
-        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(fineBytes), mesh_.indices.data());
-        if (coarseBytes > 0) glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(fineBytes), GLsizeiptr(coarseBytes), coarse_.data());
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh_.indices.size() * sizeof(uint32_t)), mesh_.indices.data(),
+                     GL_STATIC_DRAW);
+        coarseRevision_ = ~uint64_t(0); // of the render vertices before
         ++topologyUploads_;
     }
     if (const DrawnState now = drawnState(world, o.strainColors); now != drawn_) {
@@ -241,11 +266,12 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
     // One pass over the positions for two choices. From far, a grid cloth's intact blocks of 2 x 2
     // cells are drawn as two triangles (render_lod.h): when a cell (the mesh's mean rest length) at the
     // cloth's nearest point to the eye spans under kCoarseBelowPixels; the flat and strain views always
-    // show every triangle. The contact shadow: when the cloth's lowest point is over 1 m above the
-    // ground it would be invisible (darkness 0.01), and at 256 x 256 the pass cost llvmpipe about twice
-    // the frame's raster work: skip it.
-    const bool inspect = o.flat || o.strainColors;
-    const bool mayCoarsen = !coarse_.empty() && !inspect, mayShadow = world.settings.collision.ground && o.groundShadow;
+    // show every triangle. The coarse indices are made then, once per topology: a tearing cloth seen
+    // near never pays for them. The contact shadow: when the cloth's lowest point is over 1 m above
+    // the ground it would be invisible (darkness 0.01), and at 256 x 256 the pass cost llvmpipe about
+    // twice the frame's raster work: skip it.
+    frame_.inspect = o.flat || o.strainColors;
+    const bool mayCoarsen = !frame_.inspect, mayShadow = frame_.ground && o.groundShadow;
     float lowest = std::numeric_limits<float>::infinity(), nearest2 = std::numeric_limits<float>::infinity();
     if (mayCoarsen || mayShadow) {
         const Vec3 eye = view.camera.position();
@@ -254,25 +280,42 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
             nearest2 = std::min(nearest2, (x - eye).squaredNorm());
         }
     }
-    const bool coarse = mayCoarsen && float(meanRestLength(cloth)) * pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY,
-                                                                                    view.height) < kCoarseBelowPixels;
-    drawCount_ = coarse ? coarse_.size() : mesh_.indices.size();
-    drawOffset_ = coarse ? mesh_.indices.size() * sizeof(uint32_t) : 0;
-    if (mayShadow && lowest - world.settings.collision.groundHeight < kShadowReach) drawShadow(world, o, view);
+    drawCoarse_ = mayCoarsen && float(meanRestLength(cloth)) * pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY,
+                                                                                view.height) < kCoarseBelowPixels;
+    if (drawCoarse_ && coarseRevision_ != mesh_.revision) {
+        coarse_ = coarseGridIndices(cloth, mesh_);
+        coarseRevision_ = mesh_.revision;
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothCoarseEbo_); // binds it to clothVao_ until drawCloth
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(coarse_.size() * sizeof(uint32_t)), coarse_.data(),
+                     GL_STATIC_DRAW);
+    }
+    drawCoarse_ = drawCoarse_ && !coarse_.empty(); // none intact: an irregular or OBJ mesh
+    drawCount_ = drawCoarse_ ? coarse_.size() : mesh_.indices.size();
+    frame_.shadow = mayShadow && lowest - frame_.groundHeight < kShadowReach;
+}
 
+// The cloth's element buffer for this frame, fine or coarse, bound to clothVao_.
+void Renderer::bindClothIndices() {
     glBindVertexArray(clothVao_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, drawCoarse_ ? clothCoarseEbo_ : clothEbo_);
+}
+
+void Renderer::drawCloth() {
+    if (!frame_.cloth) return;
+    const RenderOptions& o = frame_.options;
+    bindClothIndices();
     // The default view interpolates only what it shades with (cloth.*.glsl): llvmpipe sets up every
     // interpolated float of every triangle. The flat and strain views need the world position and the
     // strain as well (cloth_inspect.frag.glsl; the vertex shader is the same, the linker drops what
     // cloth.frag.glsl does not read).
-    const GLuint program = inspect ? clothInspectProgram_ : clothProgram_;
+    const GLuint program = frame_.inspect ? clothInspectProgram_ : clothProgram_;
     glUseProgram(program);
-    setLighting(program, o, view);
+    setLighting(program);
     setInt(program, "uUseTexture", o.texture ? 1 : 0);
-    if (inspect) {
+    if (frame_.inspect) {
         setInt(program, "uFlat", o.flat ? 1 : 0);
         setInt(program, "uStrainColors", o.strainColors ? 1 : 0);
-        setFloat(program, "uStrainMax", world.settings.tear.enabled ? world.settings.tear.threshold : 0.5f);
+        setFloat(program, "uStrainMax", frame_.strainMax);
     }
     setVec3(program, "uFrontTint", o.frontTint);
     setVec3(program, "uBackColor", o.backColor);
@@ -285,18 +328,20 @@ void Renderer::drawCloth(const World& world, const RenderOptions& o, const View&
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.f, 1.f);
     }
-    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, reinterpret_cast<const void*>(drawOffset_));
+    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 // The cloth's triangles once more, pushed down onto the ground (shaders/shadow.*.glsl):
 // over the ground just drawn, before the cloth, blended with GL_MIN so that overlapping layers do not
 // darken twice. No depth: the ground wrote none.
-void Renderer::drawShadow(const World& world, const RenderOptions& o, const View& view) {
+void Renderer::drawShadow() {
+    const RenderOptions& o = frame_.options;
+    bindClothIndices();
     glUseProgram(shadowProgram_);
-    setLighting(shadowProgram_, o, view);
-    const float extent = std::max(60.f, view.camera.distance * 6.f);
-    setFloat(shadowProgram_, "uHeight", world.settings.collision.groundHeight);
+    setLighting(shadowProgram_);
+    const float extent = std::max(60.f, frame_.view.camera.distance * 6.f);
+    setFloat(shadowProgram_, "uHeight", frame_.groundHeight);
     setFloat(shadowProgram_, "uFadeDistance", extent * 0.9f);
     setVec3(shadowProgram_, "uColor", o.ground);
     setVec3(shadowProgram_, "uSky", o.sky);
@@ -304,7 +349,7 @@ void Renderer::drawShadow(const World& world, const RenderOptions& o, const View
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendEquation(GL_MIN);
-    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, reinterpret_cast<const void*>(drawOffset_));
+    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, nullptr);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
@@ -312,10 +357,11 @@ void Renderer::drawShadow(const World& world, const RenderOptions& o, const View
 }
 
 // Loose threads along the torn edges: the strips rebuilt with the topology, moved every frame with
-// the cloth (the normals drawCloth computed), one draw call.
-void Renderer::drawFringe(const World& world, const RenderOptions& o, const View& view) {
+// the cloth (the normals prepareCloth computed), one draw call.
+void Renderer::prepareFringe(const World& world) {
     const Cloth& cloth = world.cloth;
-    if (!o.fringe || o.strainColors || cloth.triangles.empty()) return;
+    frame_.fringeIndices = 0;
+    if (!frame_.options.fringe || frame_.options.strainColors || cloth.triangles.empty()) return;
     glBindVertexArray(fringeVao_);
     if (fringe_.stale(cloth)) {
         fringe_.rebuild(cloth, float(kWovenThreads));
@@ -329,25 +375,32 @@ void Renderer::drawFringe(const World& world, const RenderOptions& o, const View
     glBindBuffer(GL_ARRAY_BUFFER, fringeVbo_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(fringeVertices_.size() * sizeof(float)), fringeVertices_.data(),
                  GL_STREAM_DRAW);
+    frame_.fringeIndices = fringeIndices_.size();
+}
+
+void Renderer::drawFringe() {
+    if (frame_.fringeIndices == 0) return;
+    const RenderOptions& o = frame_.options;
+    glBindVertexArray(fringeVao_);
     glUseProgram(fringeProgram_);
-    setLighting(fringeProgram_, o, view);
+    setLighting(fringeProgram_);
     setInt(fringeProgram_, "uUseTexture", o.texture ? 1 : 0);
     setVec3(fringeProgram_, "uFrontTint", o.frontTint);
     setVec3(fringeProgram_, "uBackColor", o.backColor);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
     setInt(fringeProgram_, "uTexture", 0);
-    glDrawElements(GL_TRIANGLES, GLsizei(fringeIndices_.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, GLsizei(frame_.fringeIndices), GL_UNSIGNED_INT, nullptr);
 }
 
-void Renderer::drawBalls(const World& world, const RenderOptions& o, const View& view) {
-    if (world.balls.empty()) return;
+void Renderer::drawBalls() {
+    if (frame_.balls.empty()) return;
     glUseProgram(litProgram_);
-    setLighting(litProgram_, o, view);
-    setVec3(litProgram_, "uColor", o.ballColor);
+    setLighting(litProgram_);
+    setVec3(litProgram_, "uColor", frame_.options.ballColor);
     glBindVertexArray(sphereVao_);
-    for (const Ball& b : world.balls) {
-        Eigen::Affine3f model = Eigen::Translation3f(b.x) * Eigen::Scaling(b.radius);
+    for (const auto& [centre, radius] : frame_.balls) {
+        Eigen::Affine3f model = Eigen::Translation3f(centre) * Eigen::Scaling(radius);
         setMat4(litProgram_, "uModel", model.matrix().data());
         glDrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
     }
@@ -355,10 +408,12 @@ void Renderer::drawBalls(const World& world, const RenderOptions& o, const View&
 
 // ========================================================================================= [OVERLAYS]
 
-void Renderer::drawOverlays(const World& world, const RenderOptions& o, const View& view) {
+void Renderer::prepareOverlays(const World& world) {
     const Cloth& cloth = world.cloth;
-    if (!(o.structuralSprings || o.bendSprings || o.weakPoints || o.pinnedParticles) || cloth.particleCount() == 0)
-        return;
+    const RenderOptions& o = frame_.options;
+    frame_.overlays = (o.structuralSprings || o.bendSprings || o.weakPoints || o.pinnedParticles) && cloth.particleCount() > 0;
+    frame_.weakPoints = frame_.pinnedPoints = 0;
+    if (!frame_.overlays) return;
     glBindVertexArray(overlayVao_);
     glBindBuffer(GL_ARRAY_BUFFER, particleVbo_);
     if (const DrawnState now = drawnState(world, false); now != overlayDrawn_) {
@@ -380,8 +435,31 @@ void Renderer::drawOverlays(const World& world, const RenderOptions& o, const Vi
         overlayRevision_ = cloth.topologyRevision;
         overlayParticles_ = cloth.particleCount();
     }
+    // Points: pins change without a topology revision, so these lists are rebuilt each frame, the
+    // weak points first, then the pinned ones, in one buffer.
+    pointScratch_.clear();
+    auto list = [&](bool wanted, uint8_t flag) {
+        const size_t before = pointScratch_.size();
+        if (wanted)
+            for (Index p = 0; p < cloth.particleCount(); ++p)
+                if (cloth.flags[p] & flag) pointScratch_.push_back(p);
+        return GLsizei(pointScratch_.size() - before);
+    };
+    frame_.weakPoints = list(o.weakPoints, kWeak);
+    frame_.pinnedPoints = list(o.pinnedParticles, kPinned);
+    if (!pointScratch_.empty()) {
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, pointsEbo_);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(pointScratch_.size() * sizeof(uint32_t)), pointScratch_.data(),
+                     GL_STREAM_DRAW);
+    }
+}
+
+void Renderer::drawOverlays() {
+    if (!frame_.overlays) return;
+    const RenderOptions& o = frame_.options;
+    glBindVertexArray(overlayVao_);
     glUseProgram(linesProgram_);
-    setMat4(linesProgram_, "uViewProj", view.viewProjection.data());
+    setMat4(linesProgram_, "uViewProj", frame_.view.viewProjection.data());
     setFloat(linesProgram_, "uPointSize", 1.f);
     const GLint color = uniform(linesProgram_, "uColor");
     if (o.bendSprings) {
@@ -394,22 +472,16 @@ void Renderer::drawOverlays(const World& world, const RenderOptions& o, const Vi
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, structuralEbo_);
         glDrawElements(GL_LINES, structuralCount_, GL_UNSIGNED_INT, nullptr);
     }
-    // Points: pins change without a topology revision, so these lists are rebuilt each frame.
     glEnable(GL_PROGRAM_POINT_SIZE);
-    auto points = [&](uint8_t flag, float size, float r, float g, float b) {
-        pointScratch_.clear();
-        for (Index p = 0; p < cloth.particleCount(); ++p)
-            if (cloth.flags[p] & flag) pointScratch_.push_back(p);
-        if (pointScratch_.empty()) return;
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, pointsEbo_);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(pointScratch_.size() * sizeof(uint32_t)), pointScratch_.data(),
-                     GL_STREAM_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, pointsEbo_);
+    auto points = [&](GLsizei first, GLsizei count, float size, float r, float g, float b) {
+        if (count == 0) return;
         setFloat(linesProgram_, "uPointSize", size);
         glUniform4f(color, r, g, b, 1.f);
-        glDrawElements(GL_POINTS, GLsizei(pointScratch_.size()), GL_UNSIGNED_INT, nullptr);
+        glDrawElements(GL_POINTS, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(size_t(first) * sizeof(uint32_t)));
     };
-    if (o.weakPoints) points(kWeak, 5.f, 1.f, 0.55f, 0.05f);
-    if (o.pinnedParticles) points(kPinned, 6.f, 0.55f, 0.05f, 0.1f);
+    points(0, frame_.weakPoints, 5.f, 1.f, 0.55f, 0.05f);
+    points(frame_.weakPoints, frame_.pinnedPoints, 6.f, 0.55f, 0.05f, 0.1f);
     glDisable(GL_PROGRAM_POINT_SIZE);
 }
 

@@ -10,6 +10,7 @@
 
 #include <GL/glew.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace clothtear::app {
@@ -21,8 +22,17 @@ public:
     void shutdown();
     // Replaces the cloth texture (mipmapped, repeat).
     void setTexture(const Image& image);
-    // Draws one frame into the current framebuffer of fbWidth x fbHeight pixels.
-    void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight);
+    // A frame in two halves, so that the world may be stepped between them (the app's pipeline,
+    // src/app/README.md "The frame"): prepare() is the only one that reads the world: it uploads what
+    // changed (positions and normals, the topology's indices, the fringe, the overlays' lists; GL
+    // copies them) and notes what the frame draws. submit() issues the GL draws of that frame into the
+    // current framebuffer of fbWidth x fbHeight pixels and reads nothing of the world.
+    void prepare(const World& world, const RenderOptions& options, const View& view);
+    void submit(int fbWidth, int fbHeight);
+    void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight) {
+        prepare(world, options, view);
+        submit(fbWidth, fbHeight);
+    }
     size_t topologyUploads() const { return topologyUploads_; }
     size_t tornEdges() const { return fringe_.edges.size(); } // drawn with a fringe (last topology seen)
     size_t dynamicUploads() const { return dynamicUploads_; } // frames whose positions and normals were uploaded
@@ -30,30 +40,53 @@ public:
     // The cloth was replaced by a restored state whose topology revision may equal the one drawn
     // (an undo): upload the topology again on the next draw.
     void invalidateTopology() {
-        mesh_.revision = fringe_.revision = ~uint64_t(0);
+        mesh_.revision = fringe_.revision = coarseRevision_ = ~uint64_t(0);
         drawn_ = overlayDrawn_ = DrawnState{};
     }
 
 private:
-    void drawGround(const World& world, const RenderOptions& o, const View& view);
-    void drawCloth(const World& world, const RenderOptions& o, const View& view);
-    void drawShadow(const World& world, const RenderOptions& o, const View& view);
-    void drawFringe(const World& world, const RenderOptions& o, const View& view);
-    void drawBalls(const World& world, const RenderOptions& o, const View& view);
-    void drawOverlays(const World& world, const RenderOptions& o, const View& view);
-    void setLighting(GLuint program, const RenderOptions& o, const View& view);
+    // What prepare() saw of the world that submit() needs: the frame's whole input besides the GL
+    // objects.
+    struct Frame {
+        RenderOptions options;
+        View view;
+        bool ground = false;
+        float groundHeight = 0.f;
+        bool cloth = false, shadow = false, inspect = false;
+        float strainMax = 0.5f;
+        size_t fringeIndices = 0;
+        std::vector<std::pair<Vec3, float>> balls; // centre, radius
+        bool overlays = false;
+        GLsizei weakPoints = 0, pinnedPoints = 0; // in pointsEbo_: the weak ones, then the pinned
+    };
+    void prepareCloth(const World& world);
+    void prepareFringe(const World& world);
+    void prepareOverlays(const World& world);
+    void bindClothIndices();
+    void drawGround();
+    void drawCloth();
+    void drawShadow();
+    void drawFringe();
+    void drawBalls();
+    void drawOverlays();
+    void setLighting(GLuint program);
     void buildSphere();
+
+    Frame frame_;
 
     GLuint clothProgram_ = 0, clothInspectProgram_ = 0, litProgram_ = 0, groundProgram_ = 0, linesProgram_ = 0,
            fringeProgram_ = 0, shadowProgram_ = 0;
     // cloth
-    GLuint clothVao_ = 0, clothUvVbo_ = 0, clothDynamicVbo_ = 0, clothEbo_ = 0;
+    GLuint clothVao_ = 0, clothUvVbo_ = 0, clothDynamicVbo_ = 0, clothEbo_ = 0, clothCoarseEbo_ = 0;
     GLuint texture_ = 0;
     RenderMesh mesh_;
-    // The element buffer holds mesh_.indices, then the coarse indices of a grid cloth seen from far
-    // (render_lod.h); a frame draws drawCount_ indices from drawOffset_ (bytes).
+    // clothEbo_ holds mesh_.indices; clothCoarseEbo_ the coarse indices of a grid cloth seen from far
+    // (render_lod.h), made only when a frame wants them (coarseRevision_: the topology they are of).
+    // A frame draws drawCount_ indices of one of the two (drawCoarse_).
     std::vector<uint32_t> coarse_;
-    size_t drawCount_ = 0, drawOffset_ = 0;
+    uint64_t coarseRevision_ = ~uint64_t(0);
+    size_t drawCount_ = 0;
+    bool drawCoarse_ = false;
     std::vector<Vec3> normals_;
     std::vector<float> strain_;
     std::vector<float> dynamic_;
