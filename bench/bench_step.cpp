@@ -11,9 +11,14 @@
 //   BM_Phases/RES/THREADS         per-phase ms of one sub-step, from World::profile
 //   BM_Frame/RES/THREADS          one 1/60 s frame (10 sub-steps + bookkeeping); sim_s/s > 1 is
 //                                 faster than real time
+//   BM_SubstepAfterCut/RES/THREADS  the sub-step after a topology change: a 3 cm knife stroke (untimed)
+//                                 before each, at a new place of a 16 x 16 lattice over the curtain;
+//                                 against BM_Substep, what the caches' rebuilds after a tear cost
 //
 // Recommended: clothtear_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include "bench_scene.h"
+
+#include "clothtear/knife.h"
 
 #include <benchmark/benchmark.h>
 
@@ -146,6 +151,31 @@ void BM_Frame(benchmark::State& state) {
     commonCounters(state, w);
 }
 
+void BM_SubstepAfterCut(benchmark::State& state) {
+    const int res = int(state.range(0));
+    ThreadScope threads(int(state.range(1)));
+    World w = settledCurtain({res, true});
+    w.substep(); // every cache built once
+    w.profile.reset();
+    int at = 0;
+    size_t springsCut = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        const double u = -0.8 + 1.6 * double(at % 16) / 15.0, v = -0.8 + 1.6 * double(at / 16 % 16) / 15.0;
+        springsCut += w.cut({Vec2d(u, v - 0.015), Vec2d(u, v + 0.015)}).springsCut;
+        ++at;
+        state.ResumeTiming();
+        w.substep();
+        benchmark::ClobberMemory();
+    }
+    const StepProfile& p = w.profile;
+    const double n = double(std::max<uint64_t>(p.substeps, 1));
+    state.counters["springs_ms"] = p.ms[int(Phase::Springs)] / n;
+    state.counters["limit_ms"] = p.ms[int(Phase::Limit)] / n;
+    state.counters["springs_cut"] = double(springsCut) / double(std::max(at, 1));
+    commonCounters(state, w);
+}
+
 // With repetitions, the fastest repetition is reported too: on a shared 2-core machine other work
 // only ever adds time, so the minimum is the least disturbed measurement.
 double fastest(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
@@ -171,6 +201,13 @@ BENCHMARK(BM_SubstepOnLimit)
 BENCHMARK(BM_Phases)
     ->ArgNames({"res", "threads"})
     ->ArgsProduct({{64, 128, 256}, {1, 2}})
+    ->UseRealTime()
+    ->ComputeStatistics("min", fastest)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SubstepAfterCut)
+    ->ArgNames({"res", "threads"})
+    ->ArgsProduct({{64, 128}, {1, 2}})
+    ->Iterations(256) // one stroke each, on a lattice of 256 places
     ->UseRealTime()
     ->ComputeStatistics("min", fastest)
     ->Unit(benchmark::kMicrosecond);

@@ -52,8 +52,14 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
     SpringOrder out;
     out.order.reserve(count);
     std::vector<uint8_t> grouped(count, 0);
-    auto lo = [&](size_t i) { return std::min(springs[i].a, springs[i].b); };
-    auto hi = [&](size_t i) { return std::max(springs[i].a, springs[i].b); };
+    // Each spring's first end (the lower index) and the distance of its ends' indices, once: the
+    // sorts below read them in their own orders, and through the springs that was a cache miss each.
+    std::vector<uint32_t> first(count), dist(count);
+    for (size_t i = 0; i < count; ++i) {
+        first[i] = std::min(springs[i].a, springs[i].b);
+        dist[i] = std::max(springs[i].a, springs[i].b) - first[i];
+    }
+    auto lo = [&](size_t i) { return first[i]; };
     std::vector<uint32_t> byDistance;
     struct Found {
         uint32_t first; // its springs: byDistance[first + j]
@@ -66,25 +72,41 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
         // of their edges, two rows interleaved, and each of them twice (two edges whose opposite
         // corners are the same two particles). So a spring's copy number among the springs with the
         // same ends comes between: distance, copy, first end, and each copy runs along the cloth.
-        auto countingSort = [&](const std::vector<uint32_t>& in, auto key) {
-            std::vector<uint32_t> start(particles + 1, 0), out(in.size());
+        auto countingSort = [&](const std::vector<uint32_t>& in, size_t range, auto key) {
+            std::vector<uint32_t> start(range + 1, 0), out(in.size());
             for (uint32_t i : in) ++start[key(i) + 1];
-            for (size_t d = 1; d <= particles; ++d) start[d] += start[d - 1];
+            for (size_t d = 1; d <= range; ++d) start[d] += start[d - 1];
             for (uint32_t i : in) out[start[key(i)]++] = i;
             return out;
         };
-        auto distance = [&](uint32_t i) { return hi(i) - lo(i); };
         std::vector<uint32_t> all(count);
         for (size_t i = 0; i < count; ++i) all[i] = uint32_t(i);
-        const std::vector<uint32_t> byFirst = countingSort(all, [&](uint32_t i) { return lo(i); });
+        const std::vector<uint32_t> byFirst = countingSort(all, particles, lo);
+        // A spring's copy number: how many springs before it (by index) have the same two ends,
+        // capped at particles - 1. The springs of one first end are a particle's few: count within
+        // its run of byFirst, which holds them by index.
         std::vector<uint32_t> copy(count, 0);
-        {
-            const std::vector<uint32_t> byEnds = countingSort(byFirst, distance);
-            for (size_t k = 1; k < count; ++k)
-                if (distance(byEnds[k]) == distance(byEnds[k - 1]) && lo(byEnds[k]) == lo(byEnds[k - 1]))
-                    copy[byEnds[k]] = std::min<uint32_t>(copy[byEnds[k - 1]] + 1, uint32_t(particles - 1));
+        uint32_t copies = 1; // the largest copy number + 1
+        for (size_t k = 0; k < count;) {
+            size_t end = k + 1;
+            while (end < count && first[byFirst[end]] == first[byFirst[k]]) ++end;
+            for (size_t i = k + 1; i < end; ++i) {
+                uint32_t c = 0;
+                for (size_t j = k; j < i; ++j) c += dist[byFirst[j]] == dist[byFirst[i]];
+                copy[byFirst[i]] = std::min<uint32_t>(c, uint32_t(particles - 1));
+                copies = std::max(copies, copy[byFirst[i]] + 1);
+            }
+            k = end;
         }
-        byDistance = countingSort(countingSort(byFirst, [&](uint32_t i) { return copy[i]; }), distance);
+        // By (distance, copy), stable over byFirst: one counting sort on the pair where its range is
+        // small (a grid's bend-shear springs come twice: copies = 2), else one sort per key.
+        if (size_t(copies) * particles <= 8 * (particles + count))
+            byDistance = countingSort(byFirst, size_t(copies) * particles,
+                                      [&](uint32_t i) { return dist[i] * copies + copy[i]; });
+        else
+            byDistance = countingSort(countingSort(byFirst, particles, [&](uint32_t i) { return copy[i]; }), particles,
+                                      [&](uint32_t i) { return dist[i]; });
+        auto distance = [&](uint32_t i) { return dist[i]; };
         std::vector<uint32_t> start(particles + 1, 0); // first entry of each distance in byDistance
         for (uint32_t i : byDistance) ++start[distance(i) + 1];
         for (size_t d = 1; d <= particles; ++d) start[d] += start[d - 1];

@@ -161,19 +161,26 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     fill(cloth.bends, bendOrder, ns, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
     // What the guard took from the material, for the report and the stats pane.
-    S.cappedSprings = 0;
-    S.stiffnessKept = S.dampingKept = 1.f;
+    size_t capped = 0;
+    float stiffnessKept = 1.f, dampingKept = 1.f;
     if (guard)
         for (size_t e = 0; e < ns + nb; ++e) {
             const bool structural = e < ns;
             const Spring& s = structural ? cloth.springs[S.index[e]] : cloth.bends[S.index[e]];
             const float asked = (structural ? float(stretchAsked) : m.bendStiffness) * s.weight;
             const float askedDamping = (structural ? float(stretchDampingAsked) : m.bendDamping) * s.weight;
-            const bool capped = S.k[e] < asked * (1.f - 1e-6f) || S.kd[e] < askedDamping * (1.f - 1e-6f);
-            S.cappedSprings += capped;
-            if (asked > 0.f) S.stiffnessKept = std::min(S.stiffnessKept, S.k[e] / asked);
-            if (askedDamping > 0.f) S.dampingKept = std::min(S.dampingKept, S.kd[e] / askedDamping);
+            // A spring the guard left as asked (fill computed the same product) has a ratio of 1 or
+            // more, which lowers neither minimum: no division for it (they were a chain of 100 k
+            // divisions, a sixth of the rebuild after a tear at 128 x 128).
+            const bool softer = S.k[e] < asked, softerDamping = S.kd[e] < askedDamping;
+            if (!softer && !softerDamping) continue;
+            capped += S.k[e] < asked * (1.f - 1e-6f) || S.kd[e] < askedDamping * (1.f - 1e-6f);
+            if (softer && asked > 0.f) stiffnessKept = std::min(stiffnessKept, S.k[e] / asked);
+            if (softerDamping && askedDamping > 0.f) dampingKept = std::min(dampingKept, S.kd[e] / askedDamping);
         }
+    S.cappedSprings = capped;
+    S.stiffnessKept = stiffnessKept;
+    S.dampingKept = dampingKept;
     S.kes = kes;
     S.perSpringCaps = ctx.perSpringCaps;
     S.kesWidth.clear();

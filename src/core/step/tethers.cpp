@@ -29,10 +29,11 @@ uint32_t breadthFirst(const Cloth& cloth, const LimitCache& t, const std::vector
         const size_t end = set.order.size();
         for (size_t i = begin; i < end; ++i) {
             const Index p = set.order[i];
+            // The particle-spring table's own copies of the other end and the rest length: read in
+            // row order, not through the spring.
             for (uint32_t k = t.springStart[p]; k < t.springStart[p + 1]; ++k) {
-                const Spring& s = cloth.springs[t.springOf[k]];
-                const Index o = s.a == p ? s.b : s.a;
-                const float len = set.length[p] + s.rest;
+                const Index o = t.otherEnd[k];
+                const float len = set.length[p] + t.restOf[k];
                 if (layer[o] == ~0u) {
                     layer[o] = depth + 1;
                     set.order.push_back(o);
