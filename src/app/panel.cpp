@@ -348,14 +348,15 @@ void drawStatsPane(AppState& st, const World& world) {
                           "stretch the cloth). When they run out, the cloth ends the sub-step stretched\n"
                           "further: normal while you pull or a ball hits, a solver gap at rest.");
     ImGui::Text("draw %.1f ms   swap %.1f ms", s.drawMs, s.swapMs);
-    ImGui::Checkbox("step while drawing", &st.pipeline);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("On: the next frame is simulated on its own thread while this one is drawn, so\n"
-                          "the screen shows the cloth one frame later, and a software renderer and the\n"
-                          "simulation share the cores instead of taking turns. Off: step, then draw.\n"
-                          "The simulation is the same either way.");
     // Per-phase timings are for engineers: folded, so the pane fits a small window.
     if (ImGui::TreeNode("time per phase")) {
+        // Here, folded, so that the pane's rows below (the pieces list) stay where scripts click them.
+        ImGui::Checkbox("step while drawing", &st.pipeline);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("On: the next frame is simulated on its own thread while this one is drawn, so\n"
+                              "the screen shows the cloth one frame later, and a software renderer and the\n"
+                              "simulation share the cores instead of taking turns. Off: step, then draw.\n"
+                              "The simulation is the same either way.");
         if (ImGui::BeginTable("phases", 2, ImGuiTableFlags_SizingStretchProp)) {
             for (int p = 0; p < int(Phase::Count); ++p) {
                 ImGui::TableNextColumn();
