@@ -29,10 +29,6 @@ public:
     // current framebuffer of fbWidth x fbHeight pixels and reads nothing of the world.
     void prepare(const World& world, const RenderOptions& options, const View& view);
     void submit(int fbWidth, int fbHeight);
-    void draw(const World& world, const RenderOptions& options, const View& view, int fbWidth, int fbHeight) {
-        prepare(world, options, view);
-        submit(fbWidth, fbHeight);
-    }
     size_t topologyUploads() const { return topologyUploads_; }
     size_t tornEdges() const { return fringe_.edges.size(); } // drawn with a fringe (last topology seen)
     size_t dynamicUploads() const { return dynamicUploads_; } // frames whose positions and normals were uploaded
