@@ -42,6 +42,7 @@ void SimThread::start(std::function<void()> job) {
 void SimThread::wait() {
     std::unique_lock lock(mutex_);
     done_.wait(lock, [this] { return !running_; });
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
 }
 
 bool SimThread::busy() const {
@@ -61,8 +62,14 @@ void SimThread::loop(int ompThreads) {
         if (quit_ && !running_) return;
         std::function<void()> job = std::move(job_);
         lock.unlock();
-        job();
+        std::exception_ptr error;
+        try {
+            job();
+        } catch (...) {
+            error = std::current_exception();
+        }
         lock.lock();
+        error_ = error;
         running_ = false;
         done_.notify_all();
     }

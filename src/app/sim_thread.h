@@ -8,6 +8,7 @@
 // the mutex hand-over in start() and wait() orders the two threads' accesses.
 #pragma once
 #include <condition_variable>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -25,7 +26,8 @@ public:
 
     // Runs `job` on the thread. At most one job at a time: wait() for the last one first.
     void start(std::function<void()> job);
-    // Returns once the job started last has returned (at once if none runs).
+    // Returns once the job started last has returned (at once if none runs). An exception the job
+    // threw is thrown here, on the caller's thread, as it would have been had the job run there.
     void wait();
     bool busy() const;
 
@@ -35,6 +37,7 @@ private:
     mutable std::mutex mutex_;
     std::condition_variable wake_, done_;
     std::function<void()> job_;
+    std::exception_ptr error_; // what the last job threw, for wait()
     bool running_ = false, quit_ = false;
     std::thread thread_; // last: started once the members above exist
 };

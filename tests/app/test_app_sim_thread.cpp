@@ -1,11 +1,13 @@
 // The simulation thread of the app's pipeline (sim_thread.h): a job runs on another thread, wait()
-// returns only once it has, jobs run one after another in the order started, and the job's parallel
-// loops use the OpenMP team size of the thread that made it (not OpenMP's default for new threads).
+// returns only once it has, jobs run one after another in the order started, an exception comes back
+// through wait(), and the job's parallel loops use the OpenMP team size of the thread that made it
+// (not OpenMP's default for new threads).
 #include "sim_thread.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 #ifdef _OPENMP
@@ -46,6 +48,21 @@ TEST(AppSimThread, JobsRunInTheOrderStartedOnTheSameThread) {
         EXPECT_EQ(order[i], i);
         EXPECT_EQ(threads[i], threads[0]) << "one thread for the app's life: its OpenMP team is made once";
     }
+}
+
+TEST(AppSimThread, AnExceptionTheJobThrowsIsThrownByWaitAndTheThreadGoesOn) {
+    SimThread sim;
+    sim.start([] { throw std::runtime_error("step failed"); });
+    try {
+        sim.wait();
+        ADD_FAILURE() << "wait() returned without the job's exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "step failed");
+    }
+    bool ran = false;
+    sim.start([&] { ran = true; });
+    EXPECT_NO_THROW(sim.wait()); // thrown once, not again
+    EXPECT_TRUE(ran);
 }
 
 #ifdef _OPENMP
