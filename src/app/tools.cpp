@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace clothtear::app {
 
@@ -87,6 +88,13 @@ size_t dragBeforeStep(World& world, const DragState& drag, float maxSpeed) {
     const Cloth& c = world.cloth;
     const float dt = world.settings.time.frameDt;
     auto velocityTo = [&](const Vec3& target, const Vec3& x) {
+        // A particle already where it should be holds still. The sub-steps' moves land on the target
+        // only to round-off (about 1e-6 m at 2 m: 5e-5 m/s when divided by the frame), and a
+        // velocity of that round-off kept the step in its "a hand moves" mode (the guard's
+        // per-spring caps, the limit's pass cap, no overshoot rule) all the while the user held the
+        // cloth still. Still means within 64 float ulps of the target's magnitude.
+        const float still = 64.f * std::numeric_limits<float>::epsilon() * std::max(1.f, target.norm());
+        if ((target - x).squaredNorm() <= still * still) return Vec3(Vec3::Zero());
         Vec3 v = (target - x) / dt;
         const float speed = v.norm();
         if (speed > maxSpeed) v *= maxSpeed / speed;

@@ -230,6 +230,41 @@ TEST(AppTools, GrabRadiusHoldsAPatchThatMovesRigidly) {
     for (const auto& h : drag.patch) EXPECT_FALSE(w.cloth.pinned(h.particle));
 }
 
+// A hand held still is still. The sub-steps' moves land on the target only to round-off, and the
+// velocity of that round-off (5e-5 m/s) kept the step in its "a hand moves" mode while the user held
+// the cloth still: the guard's per-spring caps (more sub-steps) and a length limit that stops at
+// limit.iterations passes, so the held cloth hung past the limit (0.146 at 160 a side in the README's
+// drag). A gentle pull, then the cursor still, at 40 and 64 a side.
+TEST(AppTools, AHandHeldStillDrivesNothingAndTheLimitHoldsAgain) {
+    for (int n : {40, 64}) {
+        World w;
+        const std::vector<std::string> size{"cloth.resolution_x=" + std::to_string(n),
+                                            "cloth.resolution_y=" + std::to_string(n)};
+        ASSERT_EQ(loadScene(w, "curtain", size), "");
+        const View view = frontView();
+        DragState drag;
+        ASSERT_TRUE(beginDrag(w, drag, view, pixelOf(view, Vec3(0.f, -0.5f, 0.f)), 0.12f));
+        int movingSubsteps = 0;
+        size_t movingWhileStill = 0; // drivers of the still hand with a velocity
+        for (int f = 1; f <= 60; ++f) {
+            if (f <= 20) moveDrag(drag, view, pixelOf(view, Vec3(0.3f * f / 60.f, -0.5f, 0.f)));
+            const size_t before = w.cloth.particleCount();
+            const size_t pushed = dragBeforeStep(w, drag, 40.f);
+            if (f > 22) // the hand arrived where the cursor stopped: its drivers hold still, exactly
+                for (size_t i = w.drivers.size() - pushed; i < w.drivers.size(); ++i)
+                    movingWhileStill += w.drivers[i].velocity != Vec3::Zero();
+            w.step();
+            dragAfterStep(w, drag, pushed, before);
+            if (f == 20) movingSubsteps = w.frameSubsteps;
+        }
+        EXPECT_EQ(movingWhileStill, 0u) << n << " a side";
+        EXPECT_EQ(w.tearLog.total(), 0u) << "a gentle pull";
+        EXPECT_LT(w.frameSubsteps, movingSubsteps) << n << ": the guard's step at rest, not the moving hand's";
+        EXPECT_LE(w.maxStrain, w.settings.limit.maxStretch + 0.01f) << n << ": the limit holds the held cloth";
+        releaseDrag(w, drag, false);
+    }
+}
+
 // ============================================================================================= knife
 
 // From above the curtain (2 m x 2 m, pinned at the top) to below it at x = 0.3 m, 40 frames with the
