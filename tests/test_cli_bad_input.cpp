@@ -147,6 +147,8 @@ TEST_F(BadInput, WindowOptionsWithHeadlessAreRefused) {
     const std::string script = write("s.txt", "0 move 1 1\n");
     const std::string args = "--headless --seconds 0.1 --script '" + script + "'";
     expectRefused(run(args), args, {"--script"}); // app build: needs the window; core build: unknown option
+    const std::string pipeline = "--headless --seconds 0.1 --no-pipeline"; // the runner has no frame to overlap
+    expectRefused(run(pipeline), pipeline, {"--no-pipeline"});
 }
 
 TEST_F(BadInput, UnwritableReportPath) {
