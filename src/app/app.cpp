@@ -282,9 +282,10 @@ void App::frame(bool last) {
     // The pipeline: the steps of this frame run on the simulation thread while the main thread draws
     // the world as the last frame left it (one frame later on screen). The renderer reads the world
     // only in prepare(): GL copies what it uploads, so the thread may step the world once prepare()
-    // returned, while submit() issues the draws. The steps see the same input on the same state either way (this frame's events were
-    // handled above, on the state the last frame's steps left), so a replay gives the same world.
-    // The last frame steps first: its screenshot and report show the final state.
+    // returned, while submit() issues the draws. The steps see the same input on the same state
+    // either way (this frame's events were handled above, on the state the last frame's steps
+    // left), so a replay gives the same world. The last frame steps first: its screenshot and
+    // report show the final state.
     const int steps = stepsThisFrame(realSeconds);
     const bool overlap = state_.pipeline && steps > 0 && !last && !state_.requestExportObj;
     if (!overlap) runSteps(steps);
