@@ -9,7 +9,7 @@
 //                                 of a cloth this fine and it hangs on its tethers and the length
 //                                 limit, as the 6 m scenes and a hand's pull do at their steps)
 //   BM_Phases/RES/THREADS         per-phase ms of one sub-step, from World::profile
-//   BM_Frame/RES/THREADS          one 1/60 s frame (10 sub-steps + bookkeeping); sim_s/s > 1 is
+//   BM_Frame/RES/THREADS          one 1/60 s frame (the guard's sub-steps + bookkeeping); sim_s/s > 1 is
 //                                 faster than real time
 //   BM_SubstepAfterCut/RES/THREADS  the sub-step after a topology change: a 3 cm knife stroke (untimed)
 //                                 before each, at a new place of a 16 x 16 lattice over the curtain;
