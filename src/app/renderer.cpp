@@ -237,7 +237,8 @@ void Renderer::prepareCloth(const World& world) {
     const View& view = frame_.view;
     frame_.cloth = !cloth.triangles.empty();
     frame_.shadow = false;
-    drawCount_ = 0;
+    frame_.clothIndices = 0;
+    frame_.coarse = false;
     if (!frame_.cloth) return;
     glBindVertexArray(clothVao_);
     if (mesh_.stale(cloth)) {
@@ -280,24 +281,25 @@ void Renderer::prepareCloth(const World& world) {
             nearest2 = std::min(nearest2, (x - eye).squaredNorm());
         }
     }
-    drawCoarse_ = mayCoarsen && float(meanRestLength(cloth)) * pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY,
-                                                                                view.height) < kCoarseBelowPixels;
-    if (drawCoarse_ && coarseRevision_ != mesh_.revision) {
+    frame_.coarse = mayCoarsen && float(meanRestLength(cloth)) *
+                                          pixelsPerMetre(std::sqrt(nearest2), view.camera.fovY, view.height) <
+                                      kCoarseBelowPixels;
+    if (frame_.coarse && coarseRevision_ != mesh_.revision) {
         coarse_ = coarseGridIndices(cloth, mesh_);
         coarseRevision_ = mesh_.revision;
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, clothCoarseEbo_); // binds it to clothVao_ until drawCloth
         glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(coarse_.size() * sizeof(uint32_t)), coarse_.data(),
                      GL_STATIC_DRAW);
     }
-    drawCoarse_ = drawCoarse_ && !coarse_.empty(); // none intact: an irregular or OBJ mesh
-    drawCount_ = drawCoarse_ ? coarse_.size() : mesh_.indices.size();
+    frame_.coarse = frame_.coarse && !coarse_.empty(); // none intact: an irregular or OBJ mesh
+    frame_.clothIndices = frame_.coarse ? coarse_.size() : mesh_.indices.size();
     frame_.shadow = mayShadow && lowest - frame_.groundHeight < kShadowReach;
 }
 
 // The cloth's element buffer for this frame, fine or coarse, bound to clothVao_.
 void Renderer::bindClothIndices() {
     glBindVertexArray(clothVao_);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, drawCoarse_ ? clothCoarseEbo_ : clothEbo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, frame_.coarse ? clothCoarseEbo_ : clothEbo_);
 }
 
 void Renderer::drawCloth() {
@@ -328,7 +330,7 @@ void Renderer::drawCloth() {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.f, 1.f);
     }
-    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, GLsizei(frame_.clothIndices), GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
@@ -349,7 +351,7 @@ void Renderer::drawShadow() {
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendEquation(GL_MIN);
-    glDrawElements(GL_TRIANGLES, GLsizei(drawCount_), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, GLsizei(frame_.clothIndices), GL_UNSIGNED_INT, nullptr);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

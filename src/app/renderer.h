@@ -32,7 +32,7 @@ public:
     size_t topologyUploads() const { return topologyUploads_; }
     size_t tornEdges() const { return fringe_.edges.size(); } // drawn with a fringe (last topology seen)
     size_t dynamicUploads() const { return dynamicUploads_; } // frames whose positions and normals were uploaded
-    size_t clothTriangles() const { return drawCount_ / 3; } // the cloth's triangles in the last frame (render_lod.h)
+    size_t clothTriangles() const { return frame_.clothIndices / 3; } // the cloth's triangles in the last frame (render_lod.h)
     // The cloth was replaced by a restored state whose topology revision may equal the one drawn
     // (an undo): upload the topology again on the next draw.
     void invalidateTopology() {
@@ -49,6 +49,8 @@ private:
         bool ground = false;
         float groundHeight = 0.f;
         bool cloth = false, shadow = false, inspect = false;
+        bool coarse = false;     // the cloth's coarse indices (clothCoarseEbo_), else its fine ones
+        size_t clothIndices = 0; // drawn from that buffer
         float strainMax = 0.5f;
         size_t fringeIndices = 0;
         std::vector<std::pair<Vec3, float>> balls; // centre, radius
@@ -78,11 +80,9 @@ private:
     RenderMesh mesh_;
     // clothEbo_ holds mesh_.indices; clothCoarseEbo_ the coarse indices of a grid cloth seen from far
     // (render_lod.h), made only when a frame wants them (coarseRevision_: the topology they are of).
-    // A frame draws drawCount_ indices of one of the two (drawCoarse_).
+    // A frame draws frame_.clothIndices indices of one of the two (frame_.coarse).
     std::vector<uint32_t> coarse_;
     uint64_t coarseRevision_ = ~uint64_t(0);
-    size_t drawCount_ = 0;
-    bool drawCoarse_ = false;
     std::vector<Vec3> normals_;
     std::vector<float> strain_;
     std::vector<float> dynamic_;

@@ -106,9 +106,8 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
         else
             byDistance = countingSort(countingSort(byFirst, particles, [&](uint32_t i) { return copy[i]; }), particles,
                                       [&](uint32_t i) { return dist[i]; });
-        auto distance = [&](uint32_t i) { return dist[i]; };
         std::vector<uint32_t> start(particles + 1, 0); // first entry of each distance in byDistance
-        for (uint32_t i : byDistance) ++start[distance(i) + 1];
+        for (uint32_t i : byDistance) ++start[dist[i] + 1];
         for (size_t d = 1; d <= particles; ++d) start[d] += start[d - 1];
         for (size_t d = 1; d < particles; ++d) {
             const size_t end = start[d + 1];
