@@ -210,10 +210,14 @@ TEST(PieceSleep, ATornOffStripSleepsOnTheGroundWhileTheCurtainSwings) {
         w.drivers.push_back(Driver{{held}, Vec3(0.f, 0.f, 0.5f)});
         const std::vector<Vec3> x = w.cloth.x;
         const uint64_t substeps = w.profile.substeps;
-        for (int f = 0; f < 30; ++f) w.step();
+        uint64_t guardSubsteps = 0; // the hand may tear the curtain, and a tear may change the guard's step
+        for (int f = 0; f < 30; ++f) {
+            w.step();
+            guardSubsteps += uint64_t(w.frameSubsteps);
+        }
         for (Index p : strip) EXPECT_EQ(w.cloth.x[p], x[p]);
         EXPECT_EQ(piecesAsleep(w), 1u) << res;
-        EXPECT_EQ(w.profile.substeps - substeps, 30u * uint64_t(w.frameSubsteps)) << res << ": the World is simulated";
+        EXPECT_EQ(w.profile.substeps - substeps, guardSubsteps) << res << ": the World is simulated";
         EXPECT_NEAR((w.cloth.x[held] - x[held]).z(), 0.25f, 1e-3f) << res << ": and the hand moved the curtain";
         std::cout << res << " a side: the strip sleeps after " << frames << " frames, " << strip.size() << " particles\n";
     }

@@ -343,8 +343,8 @@ void drawStatsPane(AppState& st, const World& world) {
         ImGui::TextDisabled("stretch kept within the limit");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The length limit (limit.max_stretch) pulls over-stretched springs back each\n"
-                          "sub-step in a bounded number of passes (limit.iterations; with gauss-seidel up\n"
-                          "to 4 x the cloth's depth, but limit.iterations while you drag: the hand may\n"
+                          "sub-step in a bounded number of passes (with gauss-seidel up to 4 x the\n"
+                          "cloth's depth in springs, but an eighth of it while you drag: the hand may\n"
                           "stretch the cloth). When they run out, the cloth ends the sub-step stretched\n"
                           "further: normal while you pull or a ball hits, a solver gap at rest.");
     ImGui::Text("draw %.1f ms   swap %.1f ms", s.drawMs, s.swapMs);

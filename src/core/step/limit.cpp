@@ -95,17 +95,24 @@ void refreshLimitCache(const StepContext& ctx, const Cloth& cloth, LimitCache& C
 // hold?"): a 2 m cloth pinned on its left edge needs about 100 passes at 33 x 33 and 200 at 65 x 65
 // while it swings. Without anchors, D is the side of a square of the cloth's particles. Jacobi:
 // limit.iterations, as set.
-// While a driver moves particles, limit.iterations passes, as for Jacobi: the hand's pull is what
-// may stretch springs past the limit (issue 12, goal 5), and chasing it to convergence every
-// sub-step, with the cloth taut between the hand and the pins, ran the passes to the cap in most
-// sub-steps: a curtain dragged sideways in the app (assets/screenshots/tear.txt) took 1.9 s per
-// frame at 128 x 128 (70 % of the sub-steps at 512 passes) and 178 ms at 80 x 80; with the drivers'
-// cap, 33 and 5.4 ms, and the drag rips at 40, 80, 128 and 160 (bench/README.md, "Dragging").
+// While a driver moves particles, not to convergence: the hand's pull is what may stretch springs
+// past the limit (issue 12, goal 5), and chasing it to convergence every sub-step, with the cloth
+// taut between the hand and the pins, ran the passes to the cap in most sub-steps: a curtain dragged
+// sideways in the app (assets/screenshots/tear.txt) took 1.9 s per frame at 128 x 128 (70 % of the
+// sub-steps at 512 passes) and 178 ms at 80 x 80 (bench/README.md, "Dragging").
+// Instead kHandPassesPerDepth x D passes, a fixed share of the depth, not a fixed count: each pass
+// carries the hand's pull about one spring further (expand lists a corrected spring's neighbours for
+// the next pass), so a fixed count spread the hand's excess over a fixed number of springs, fewer
+// metres at a finer mesh, and the sideways pull tore 1 s later at 40 a side than at 80 and 160, at a
+// different angle (bench/README.md, "The hand's passes by depth"). An eighth of the depth is the 12
+// passes of before at about 100 a side (the drag's resolutions 80 and 128 were measured with those).
 constexpr int kPassesPerDepth = 4;
+constexpr double kHandPassesPerDepth = 0.125;
 int passCap(const StepContext& ctx, const Cloth& cloth, const LimitCache& C) {
     const LimitSettings& L = ctx.settings->limit;
-    if (L.solver != LimitSolver::GaussSeidel || L.iterations <= 0 || driversMove(*ctx.drivers)) return L.iterations;
+    if (L.solver != LimitSolver::GaussSeidel || L.iterations <= 0) return L.iterations;
     const uint32_t depth = C.depth > 0 ? C.depth : uint32_t(std::sqrt(double(cloth.particleCount())));
+    if (driversMove(*ctx.drivers)) return std::max(1, int(std::lround(kHandPassesPerDepth * double(depth))));
     return std::max(L.iterations, kPassesPerDepth * int(depth));
 }
 
