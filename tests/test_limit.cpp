@@ -192,8 +192,8 @@ TEST(Limit, ASpringOneSubStepCarriesFromWithinTheLimitPastItsThresholdIsLimitedN
 }
 
 // The same spring tears where the limit is not a hard cap: it started the sub-step already past the
-// limit (a load the limit could not hold), or a hand moves (the passes stop at limit.iterations and
-// the hand may stretch the cloth, issue 12 goal 5).
+// limit (a load the limit could not hold), or a hand moves (the passes stop at an eighth of the
+// cloth's depth and the hand may stretch the cloth, issue 12 goal 5).
 TEST(Limit, ASpringAlreadyPastTheLimitOrUnderAMovingHandTears) {
     EXPECT_GE(kickOneSpring(0.2f, false).tears, 1u) << "started at strain 0.2";
     EXPECT_GE(kickOneSpring(0.f, true).tears, 1u) << "a hand moves";
