@@ -5,9 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>

@@ -185,7 +185,7 @@ TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
 // mesh. With the limit's passes under a moving hand a fixed count (12), not a share of the depth
 // (limit.cpp, passCap), the hand's pull reached twice as far in metres at 40 as at 80: the 6 m sheet
 // at 40 tore 1 s later, at 13 deg, the 3 m one at 13 deg too (bench/README.md, "The hand's passes by
-// depth"). The rip's length is not the same yet on the 6 m sheets (1.5-1.6 m at 40, 2.0-2.9 m at 80
+// depth"). The rip's length is not the same yet on the 6 m sheets (1.5-1.6 m at 40, 2.0-3.4 m at 80
 // after 4 s; issue 13 goal 1).
 TEST(TearScenes, PulledSidewaysTheRipLeansTheSameWayAtTwoResolutions) {
     for (const char* sheet : {"", " --set cloth.width=3 --set cloth.height=3", " --set cloth.mesh=irregular"}) {

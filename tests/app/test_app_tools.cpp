@@ -234,7 +234,8 @@ TEST(AppTools, GrabRadiusHoldsAPatchThatMovesRigidly) {
 // velocity of that round-off (5e-5 m/s) kept the step in its "a hand moves" mode while the user held
 // the cloth still: the guard's per-spring caps (more sub-steps) and a length limit that stops short
 // of convergence (then limit.iterations passes, now an eighth of the depth), so the held cloth hung
-// past the limit (0.146 at 160 a side in the README's drag). A gentle pull, then the cursor still, at 40 and 64 a side.
+// past the limit (0.146 at 160 a side in the README's drag). A gentle pull, then the cursor still, at
+// 40 and 64 a side.
 TEST(AppTools, AHandHeldStillDrivesNothingAndTheLimitHoldsAgain) {
     for (int n : {40, 64}) {
         World w;
