@@ -8,13 +8,17 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 
 namespace {
 
 // threads > 0: the run's OpenMP threads (the state depends on the thread count, test_determinism.cpp).
+// The report's file is named by the process too: ctest runs two tests at once, and two of them may run
+// the same scene with other thread counts.
 nlohmann::json runScene(const std::string& scene, double seconds, const std::string& extra = "", int threads = 0) {
-    const std::string out = ::testing::TempDir() + "tear_scene_" + std::to_string(std::hash<std::string>{}(scene + extra)) + ".json";
     const std::string env = threads > 0 ? "OMP_NUM_THREADS=" + std::to_string(threads) + " " : "";
+    const std::string out = ::testing::TempDir() + "tear_scene_" + std::to_string(getpid()) + "_" +
+                            std::to_string(std::hash<std::string>{}(env + scene + extra)) + ".json";
     const std::string cmd = env + std::string(CLOTHTEAR_BINARY) + " --headless --scene " + scene + " --seconds " +
                             std::to_string(seconds) + " " + extra + " --json " + out + " > /dev/null";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
