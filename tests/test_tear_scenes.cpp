@@ -1,5 +1,7 @@
 // The thesis ball experiments (Onal 4.1) and the pull/tension scenes, checked through the headless
 // runner's JSON report (the same path a user takes).
+#include "tear_axis.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -135,15 +137,8 @@ Rip ripOf(const nlohmann::json& r) {
     rip.smallestPiece = r["pieces"]["smallest_area"].get<double>();
     if (ev.empty()) return rip;
     rip.firstTime = ev[0]["time"].get<double>();
-    double mx = 0, my = 0;
-    for (const auto& e : ev) mx += e["rest"][0].get<double>(), my += e["rest"][1].get<double>();
-    mx /= double(ev.size()), my /= double(ev.size());
-    double sxx = 0, syy = 0, sxy = 0;
-    for (const auto& e : ev) {
-        const double dx = e["rest"][0].get<double>() - mx, dy = e["rest"][1].get<double>() - my;
-        sxx += dx * dx, syy += dy * dy, sxy += dx * dy;
-    }
-    const double th = 0.5 * std::atan2(2 * sxy, sxx - syy); // principal axis of the tear positions
+    const TearAxis axis = tearAxisOf(ev);
+    const double mx = axis.mx, my = axis.my, th = axis.theta;
     double lo = 1e9, hi = -1e9;
     for (const auto& e : ev) {
         const double p = (e["rest"][0].get<double>() - mx) * std::cos(th) + (e["rest"][1].get<double>() - my) * std::sin(th);

@@ -1,6 +1,7 @@
 // The real app in a virtual X display (Xvfb, started by each test through xvfb-run): screenshots,
 // replayed scripts (drag tears, a ball hits, a panel click changes a parameter), exit statuses and the
 // no-display message. Skipped, saying why, only when xvfb-run is not installed.
+#include "../tear_axis.h"
 #include "image_io.h"
 #include "wav_file.h"
 
@@ -76,19 +77,9 @@ AppRun runApp(const std::string& args, bool display = true, const std::string& e
 
 nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(slurp(p)); }
 
-// The principal axis of a report's tear events (their rest positions in the cloth's x-y plane), in
-// degrees from horizontal, 0 to 180: which way a rip runs.
+// Which way a report's rip runs, in degrees from horizontal, 0 to 180.
 double ripAxisDeg(const nlohmann::json& report) {
-    const auto& ev = report["tear_events"];
-    double mx = 0, my = 0;
-    for (const auto& e : ev) mx += e["rest"][0].get<double>(), my += e["rest"][1].get<double>();
-    mx /= double(ev.size()), my /= double(ev.size());
-    double sxx = 0, syy = 0, sxy = 0;
-    for (const auto& e : ev) {
-        const double dx = e["rest"][0].get<double>() - mx, dy = e["rest"][1].get<double>() - my;
-        sxx += dx * dx, syy += dy * dy, sxy += dx * dy;
-    }
-    const double deg = 0.5 * std::atan2(2 * sxy, sxx - syy) * 180.0 / M_PI;
+    const double deg = tearAxisOf(report["tear_events"]).theta * 180.0 / M_PI;
     return deg < 0 ? deg + 180.0 : deg;
 }
 
