@@ -100,16 +100,25 @@ size_t dragBeforeStep(World& world, const DragState& drag, float maxSpeed) {
         if (speed > maxSpeed) v *= maxSpeed / speed;
         return v;
     };
+    // The hand stays above the ground: a cursor dragged below the horizon puts the drag plane's
+    // point under the floor, and the held patch pulled through it while the ground pushed the cloth
+    // around it back up stretched the springs between them to 90 x their rest length (a yank off the
+    // bottom of the screen at 80 a side) and ran the limit's passes to their cap in every sub-step.
+    const CollisionSettings& floor = world.settings.collision;
+    auto onOrAbove = [&](Vec3 target) {
+        if (floor.ground) target.y() = std::max(target.y(), floor.groundHeight + floor.thickness);
+        return target;
+    };
     // One driver per particle: each heads for its place in the rigid patch around the target.
     Driver d;
     d.particles = {drag.particle};
-    d.velocity = velocityTo(drag.target, c.x[drag.particle]);
+    d.velocity = velocityTo(onOrAbove(drag.target), c.x[drag.particle]);
     world.drivers.push_back(std::move(d));
     for (const DragState::Held& h : drag.patch) {
         if (h.particle >= c.particleCount()) continue;
         Driver e;
         e.particles = {h.particle};
-        e.velocity = velocityTo(drag.target + h.offset, c.x[h.particle]);
+        e.velocity = velocityTo(onOrAbove(drag.target + h.offset), c.x[h.particle]);
         world.drivers.push_back(std::move(e));
     }
     return world.drivers.size() - before;

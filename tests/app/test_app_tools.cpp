@@ -266,6 +266,43 @@ TEST(AppTools, AHandHeldStillDrivesNothingAndTheLimitHoldsAgain) {
     }
 }
 
+// A yank below the horizon (issue 13 goal 1): the cursor ray meets the drag plane under the floor.
+// The hand stops on the ground: a held patch pulled through it, while the ground pushed the cloth
+// around it back up, stretched the springs between them to 90 x their rest length, ran the limit's
+// passes to their cap in every sub-step and shredded the rim (the random drags' yanks at 40 / 80 a
+// side left 6 / 13 and 4 / 21 pieces; now 2 and 2). The cursor goes from 0.5 m to 6 m below the
+// middle in 20 frames (16.5 m/s) and holds there.
+TEST(AppTools, AYankBelowTheHorizonStopsTheHandOnTheGround) {
+    for (int n : {40, 64}) {
+        World w;
+        const std::vector<std::string> size{"cloth.resolution_x=" + std::to_string(n),
+                                            "cloth.resolution_y=" + std::to_string(n)};
+        ASSERT_EQ(loadScene(w, "curtain", size), "");
+        const View view = frontView();
+        // The drag plane faces the camera: pixels are affine in the height on it.
+        const Vec2 from = pixelOf(view, Vec3(0.f, -0.5f, 0.f)), step = pixelOf(view, Vec3(0.f, -1.5f, 0.f)) - from;
+        DragState drag;
+        ASSERT_TRUE(beginDrag(w, drag, view, from, 0.12f));
+        const float floorY = w.settings.collision.groundHeight + w.settings.collision.thickness;
+        float lowest = 1e9f; // of the held particles, over the frames
+        for (int f = 1; f <= 60; ++f) {
+            moveDrag(drag, view, from + step * (5.5f * float(std::min(f, 20)) / 20.f));
+            const size_t before = w.cloth.particleCount();
+            const size_t pushed = dragBeforeStep(w, drag, 40.f);
+            w.step();
+            dragAfterStep(w, drag, pushed, before);
+            lowest = std::min(lowest, w.cloth.x[drag.particle].y());
+            for (const DragState::Held& h : drag.patch) lowest = std::min(lowest, w.cloth.x[h.particle].y());
+        }
+        const std::string where = std::to_string(n) + " a side";
+        EXPECT_GE(lowest, floorY - 1e-4f) << where << ": the hand stops on the ground";
+        EXPECT_GT(w.tearLog.total(), 0u) << where << ": pulled 2.5 m past the cloth's reach, it tears";
+        EXPECT_LE(w.maxStrain, w.settings.limit.maxStretch + 0.01f) << where << ": nothing left stretched once the hand holds still";
+        EXPECT_TRUE(w.finite) << where;
+        releaseDrag(w, drag, false);
+    }
+}
+
 // ============================================================================================= knife
 
 // From above the curtain (2 m x 2 m, pinned at the top) to below it at x = 0.3 m, 40 frames with the

@@ -268,14 +268,15 @@ TEST(AppWindow, ADragRipsWithoutScraps) {
 // than minLooseArea (cloth.h, 1.5 squared mean rest lengths: 3.9 rest triangles of this grid), so
 // pieces of 4 triangles are allowed, and a bound of exactly 4 would sit on round-off. Most drags tear
 // (a slow lift of the cloth does not, as it should not: drag 5 lifts it 0.3 m), so the check is not
-// vacuous. When written: drags 0 and 2 yank the cloth off the screen at 25-29 px a frame and leave 5 /
-// 19 and 6 / 13 pieces at 40 / 80, the smallest 5.0 / 4.0 and 5.4 / 5.0 rest triangles; the others
-// tear off at most one piece of 41 triangles or more. Since the hand's passes are a share of the
-// depth (limit.cpp, passCap): 6 / 13 and 4 / 21 pieces, the smallest 4.3 / 4.6 and 10 / 3.9.
+// vacuous. And a drag leaves as many pieces at 80 as at 40 (issue 13 goal 1): five tear the held
+// patch out (2 pieces), drag 5 none. Drags 0 and 2 yank the cloth off the bottom of the screen at
+// 25-29 px a frame; until the hand stopped on the ground (tools.cpp, dragBeforeStep) they pulled
+// the held patch through the floor and left 6 / 13 and 4 / 21 pieces at 40 / 80 (37 and 23 at 160).
 TEST(AppWindow, RandomDragsTearWithoutScraps) {
     REQUIRE_XVFB();
     std::mt19937 rng(2026);
     int tore[2] = {0, 0}; // drags that tore, at 40 and at 80
+    int pieces[2] = {0, 0}; // pieces the drag left, at 40 and at 80
     auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (double(rng()) / 4294967296.0); };
     for (int d = 0; d < 6; ++d) {
         const double x = uniform(520, 880), y = uniform(200, 560), angle = uniform(0, 2 * M_PI);
@@ -298,6 +299,7 @@ TEST(AppWindow, RandomDragsTearWithoutScraps) {
             ASSERT_EQ(r.status, 0) << where << ": " << r.output;
             const auto report = readJson(json);
             tore[fine] += report["tears_total"].get<int>() > 0;
+            pieces[fine] = report["pieces"]["count"].get<int>();
             const double restTriangle = report["rest_area"].get<double>() / (2.0 * (n - 1) * (n - 1));
             EXPECT_GE(report["pieces"]["smallest_area"].get<double>(), 3.5 * restTriangle)
                 << where << ": " << report["pieces"]["count"] << " pieces, areas " << report["pieces"]["areas"] << "\n"
@@ -306,6 +308,7 @@ TEST(AppWindow, RandomDragsTearWithoutScraps) {
             for (double a : report["pieces"]["areas"].get<std::vector<double>>()) total += a;
             EXPECT_NEAR(total, report["rest_area"].get<double>(), 1e-9) << where << ": no area lost";
         }
+        EXPECT_EQ(pieces[1], pieces[0]) << "drag " << d << ": pieces at 80 and at 40\n" << script.str();
     }
     EXPECT_GE(tore[0], 4) << "drags that tore at 40";
     EXPECT_GE(tore[1], 4) << "drags that tore at 80";
