@@ -87,3 +87,41 @@ TEST(LimitReport, AMovingHandCapsThePassesAtAShareOfTheDepth) {
         EXPECT_GT(meanPerSubstep, double(cap)) << res;
     }
 }
+
+// While a ball touches the cloth the Gauss-Seidel passes stop at the cloth's depth (limit.cpp,
+// passCap): the ball tool's throw (2 kg, 0.5 m, 8 m/s) drags the 2 m curtain taut against its pins,
+// and running the passes towards 4 x the depth over lists spanning the whole cloth made the hit cost
+// 1.2 s a frame at 128 a side. At 40 and 64 a side (depth 39 and 63 from the pinned top row), until
+// the first tear (a tear can make the cloth deeper: paths round the rip): no frame of the hit takes
+// more passes than the depth per sub-step, the cap binds in some sub-steps, and the ball tears.
+TEST(LimitReport, ABallOnTheClothCapsThePassesAtTheDepth) {
+    for (int res : {40, 64}) {
+        const std::string r = std::to_string(res);
+        World w;
+        const std::vector<std::string> sets = {"cloth.resolution_x=" + r, "cloth.resolution_y=" + r, "sleep.enabled=0"};
+        ASSERT_EQ(loadScene(w, "curtain", sets), "");
+        Ball b;
+        b.x = Vec3(0.f, 0.f, 1.f);
+        b.v = Vec3(0.f, 0.f, -8.f);
+        w.balls.push_back(b);
+        const uint64_t depth = uint64_t(res - 1);
+        uint64_t capped = 0;
+        double worstPerSubstep = 0;
+        while (w.time < 1.0) {
+            const StepProfile before = w.profile;
+            w.step();
+            const uint64_t passes = w.profile.limitPasses - before.limitPasses;
+            const uint64_t substeps = w.profile.substeps - before.substeps;
+            if (w.tearLog.total() > 0) break;
+            capped += w.profile.limitCapped - before.limitCapped;
+            worstPerSubstep = std::max(worstPerSubstep, double(passes) / double(substeps));
+            // Until the first tear: a tear can make the cloth deeper (paths round the rip).
+            if (w.tearLog.total() > 0) break;
+            EXPECT_LE(passes, depth * substeps) << res << " a side at " << w.time << " s";
+        }
+        std::cout << res << " a side: at most " << worstPerSubstep << " passes per sub-step in a frame (depth " << depth
+                  << "), " << capped << " sub-steps at the cap, " << w.tearLog.total() << " tears\n";
+        EXPECT_GT(capped, 0u) << res << ": the ball stretches the cloth past what the depth's passes undo";
+        EXPECT_GT(w.tearLog.total(), 0u) << res << ": the ball tears";
+    }
+}

@@ -62,7 +62,7 @@ const ParamInfo kParams[] = {
 
     CT_B("limit.enabled", limit.enabled, "Provot length limiting after each sub-step", false),
     CT_F("limit.max_stretch", limit.maxStretch, 0.01, 0.5, 0.001, 10, "", "Springs longer than rest*(1+value) are pulled back", false),
-    CT_I("limit.iterations", limit.iterations, 0, 50, 0, 1000, "", "Most passes of the length limit per sub-step with jacobi; gauss-seidel takes up to the larger of this and 4 x the cloth's depth in springs, or an eighth of the depth while a driver (the drag tool, a scene's hand or clamp) moves particles (passes stop when nothing is over the limit)", false),
+    CT_I("limit.iterations", limit.iterations, 0, 50, 0, 1000, "", "Most passes of the length limit per sub-step with jacobi; gauss-seidel takes up to the larger of this and 4 x the cloth's depth in springs, an eighth of the depth while a driver (the drag tool, a scene's hand or clamp) moves particles, or the depth while a ball touches the cloth (passes stop when nothing is over the limit)", false),
     CT_F("limit.relaxation", limit.relaxation, 0.5, 1.8, 0.1, 2, "", "Over-relaxation of the limit's correction", false),
     CT_E("limit.solver", limit.solver, kLimitSolverNames, "How the limit's passes correct: gauss-seidel (in place, spring after spring: converges in far fewer passes) or jacobi (averaged)", false),
 
