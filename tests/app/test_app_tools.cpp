@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 #include <iostream>
+#include <string>
+#include <vector>
 
 using namespace clothtear;
 using namespace clothtear::app;
@@ -29,6 +31,19 @@ Vec2 pixelOf(const View& v, const Vec3& p) {
     return w;
 }
 
+// The settings of an n x n cloth.
+std::vector<std::string> sides(int n) {
+    return {"cloth.resolution_x=" + std::to_string(n), "cloth.resolution_y=" + std::to_string(n)};
+}
+
+// One frame with the hand holding the cloth, as the app steps it (app_sim.cpp).
+void stepHolding(World& w, const DragState& drag) {
+    const size_t before = w.cloth.particleCount();
+    const size_t pushed = dragBeforeStep(w, drag, 40.f);
+    w.step();
+    dragAfterStep(w, drag, pushed, before);
+}
+
 } // namespace
 
 TEST(AppTools, DragFollowsTheCursorAndPullingHardTears) {
@@ -43,10 +58,7 @@ TEST(AppTools, DragFollowsTheCursorAndPullingHardTears) {
     // Pull it 1.5 m sideways over half a second.
     for (int f = 1; f <= 60; ++f) {
         moveDrag(drag, view, pixelOf(view, Vec3(std::min(1.5f, 0.05f * f), -0.5f, 0.f)));
-        const size_t before = w.cloth.particleCount();
-        const size_t pushed = dragBeforeStep(w, drag, 40.f);
-        w.step();
-        dragAfterStep(w, drag, pushed, before);
+        stepHolding(w, drag);
         EXPECT_EQ(w.drivers.size(), driversBefore);
     }
     EXPECT_NEAR(w.cloth.x[p].x(), 1.5f, 0.05f);
@@ -218,10 +230,7 @@ TEST(AppTools, GrabRadiusHoldsAPatchThatMovesRigidly) {
     // A gentle pull (0.5 m/s towards the camera's right) moves the patch.
     for (int f = 1; f <= 30; ++f) {
         moveDrag(drag, view, pixelOf(view, Vec3(0.5f * f / 60.f, -0.5f, 0.f)));
-        const size_t before = w.cloth.particleCount();
-        const size_t pushed = dragBeforeStep(w, drag, 40.f);
-        w.step();
-        dragAfterStep(w, drag, pushed, before);
+        stepHolding(w, drag);
     }
     const Vec3 p = w.cloth.x[drag.particle];
     for (const auto& h : drag.patch) EXPECT_NEAR((w.cloth.x[h.particle] - p - h.offset).norm(), 0.f, 1e-3f);
@@ -239,9 +248,7 @@ TEST(AppTools, GrabRadiusHoldsAPatchThatMovesRigidly) {
 TEST(AppTools, AHandHeldStillDrivesNothingAndTheLimitHoldsAgain) {
     for (int n : {40, 64}) {
         World w;
-        const std::vector<std::string> size{"cloth.resolution_x=" + std::to_string(n),
-                                            "cloth.resolution_y=" + std::to_string(n)};
-        ASSERT_EQ(loadScene(w, "curtain", size), "");
+        ASSERT_EQ(loadScene(w, "curtain", sides(n)), "");
         const View view = frontView();
         DragState drag;
         ASSERT_TRUE(beginDrag(w, drag, view, pixelOf(view, Vec3(0.f, -0.5f, 0.f)), 0.12f));
@@ -275,9 +282,7 @@ TEST(AppTools, AHandHeldStillDrivesNothingAndTheLimitHoldsAgain) {
 TEST(AppTools, AYankBelowTheHorizonStopsTheHandOnTheGround) {
     for (int n : {40, 64}) {
         World w;
-        const std::vector<std::string> size{"cloth.resolution_x=" + std::to_string(n),
-                                            "cloth.resolution_y=" + std::to_string(n)};
-        ASSERT_EQ(loadScene(w, "curtain", size), "");
+        ASSERT_EQ(loadScene(w, "curtain", sides(n)), "");
         const View view = frontView();
         // The drag plane faces the camera: pixels are affine in the height on it.
         const Vec2 from = pixelOf(view, Vec3(0.f, -0.5f, 0.f)), step = pixelOf(view, Vec3(0.f, -1.5f, 0.f)) - from;
@@ -287,10 +292,7 @@ TEST(AppTools, AYankBelowTheHorizonStopsTheHandOnTheGround) {
         float lowest = 1e9f; // of the held particles, over the frames
         for (int f = 1; f <= 60; ++f) {
             moveDrag(drag, view, from + step * (5.5f * float(std::min(f, 20)) / 20.f));
-            const size_t before = w.cloth.particleCount();
-            const size_t pushed = dragBeforeStep(w, drag, 40.f);
-            w.step();
-            dragAfterStep(w, drag, pushed, before);
+            stepHolding(w, drag);
             lowest = std::min(lowest, w.cloth.x[drag.particle].y());
             for (const DragState::Held& h : drag.patch) lowest = std::min(lowest, w.cloth.x[h.particle].y());
         }
