@@ -72,6 +72,13 @@ constexpr uint32_t kPrefilterWait = 4;
 // Lists shorter than this are worked by one thread (a barrier costs more than the work).
 constexpr size_t kSerialList = 2048;
 
+// Is a spring of rest length `rest` and squared length len2 over its limit by more than the
+// tolerance, given its ends' flags (or-ed)? Springs under a ball may stretch up to the tear
+// threshold: the ball, not the limit, decides where they are.
+inline bool exceedsLimit(uint8_t endFlags, float rest, float len2, float doneRatio, float heldDoneRatio) {
+    return len2 > sq(rest * ((endFlags & kTouched) ? heldDoneRatio : doneRatio));
+}
+
 // Rebuilds the limit cache when the topology, the pinned particles or the drivers changed. Tether
 // anchors are the pinned particles that no driver moves: a tether to a moving clamp would drag the
 // cloth along with it and put all the stretch at the border between the clamp's particles and the
@@ -137,13 +144,13 @@ public:
     bool prefilterFailed = false; // the prefilter ran and found springs over: expand ran anyway
 
 private:
-    // Is spring s (squared length len2) over its limit, by more than the tolerance? Springs under a
-    // ball may stretch up to the tear threshold: the ball, not the limit, decides where they are.
+    // Is an end of spring s under a ball this sub-step?
     bool underBall(const Spring& s) const { return ((flags_[s.a] | flags_[s.b]) & kTouched) != 0; }
+    // Is spring s (squared length len2) over its limit, by more than the tolerance (exceedsLimit)?
     bool overLimit(const Spring& s, float len2) const { return overLimit(flags_[s.a] | flags_[s.b], s.rest, len2); }
     // The same from the ends' flags (or-ed) and the rest length.
     bool overLimit(uint8_t endFlags, float rest, float len2) const {
-        return len2 > sq(rest * ((endFlags & kTouched) ? heldDoneRatio_ : doneRatio_));
+        return exceedsLimit(endFlags, rest, len2, doneRatio_, heldDoneRatio_);
     }
     // The ratio at which spring s tears (tearStrainFor): a hem first, then a weak end.
     float tearRatioOf(const Spring& s) const {
@@ -469,20 +476,26 @@ int LimitSolve::gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32
 void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list) {
     // overLimit, from the particle-spring table's other end and rest length: the spring itself is
     // not read (|x_q - x_p|^2 is |x_b - x_a|^2 to the bit).
+    // Members in locals: the byte stores into `listed` may alias anything, and the compiler
+    // reloaded every member after each of them.
     const uint32_t* start = C_.springStart.data();
-    const Index* springOf = C_.springOf.data();
-    const Index* otherEnd = C_.otherEnd.data();
-    const float* restOf = C_.restOf.data();
+    const LimitCache::SpringEnd* ends = C_.ends.data();
+    const Vec3* x = x_;
+    const uint8_t* flags = flags_;
+    const uint32_t* movedIn = movedIn_;
+    uint8_t* listed = listed_;
+    const float done = doneRatio_, heldDone = heldDoneRatio_;
     for (Index p : moved) {
-        const Vec3 xp = x_[p];
-        const uint8_t fp = flags_[p];
-        for (uint32_t k = start[p]; k < start[p + 1]; ++k) {
-            const Index i = springOf[k];
-            if (listed_[i]) continue;
-            const Index q = otherEnd[k];
-            if (q < p && movedIn_[q] == stamp) continue;
-            if (overLimit(fp | flags_[q], restOf[k], (x_[q] - xp).squaredNorm())) {
-                listed_[i] = 1;
+        const Vec3 xp = x[p];
+        const uint8_t fp = flags[p];
+        for (uint32_t k = start[p], kEnd = start[p + 1]; k < kEnd; ++k) {
+            const LimitCache::SpringEnd e = ends[k];
+            const Index i = e.spring;
+            if (listed[i]) continue;
+            const Index q = e.other;
+            if (q < p && movedIn[q] == stamp) continue;
+            if (exceedsLimit(fp | flags[q], e.rest, (x[q] - xp).squaredNorm(), done, heldDone)) {
+                listed[i] = 1;
                 list.push_back(i);
             }
         }

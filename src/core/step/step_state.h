@@ -89,12 +89,15 @@ struct LimitCache {
     std::array<TetherSet, kTetherSets> tethers;
     uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
     float meanRest = 0;        // m, mean rest length of the structural springs
-    // Structural springs of particle p: springOf[springStart[p] .. springStart[p + 1]), and beside
-    // each its other end and rest length (what the limit's listing reads, without the spring).
+    // Structural springs of particle p: ends[springStart[p] .. springStart[p + 1]), each with its
+    // other end and rest length beside it (what the limit's listing and the tethers' search read,
+    // without the spring): one cache line holds a particle's row.
+    struct SpringEnd {
+        Index spring, other;
+        float rest; // m
+    };
     std::vector<uint32_t> springStart;
-    std::vector<Index> springOf;
-    std::vector<Index> otherEnd;
-    std::vector<float> restOf; // m
+    std::vector<SpringEnd> ends;
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
     std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)

@@ -32,8 +32,8 @@ uint32_t breadthFirst(const Cloth& cloth, const LimitCache& t, const std::vector
             // The particle-spring table's own copies of the other end and the rest length: read in
             // row order, not through the spring.
             for (uint32_t k = t.springStart[p]; k < t.springStart[p + 1]; ++k) {
-                const Index o = t.otherEnd[k];
-                const float len = set.length[p] + t.restOf[k];
+                const Index o = t.ends[k].other;
+                const float len = set.length[p] + t.ends[k].rest;
                 if (layer[o] == ~0u) {
                     layer[o] = depth + 1;
                     set.order.push_back(o);
@@ -86,16 +86,11 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     }
     for (size_t p = 0; p < n; ++p) start[p + 1] += start[p];
     std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    t.springOf.resize(start[n]);
-    t.otherEnd.resize(start[n]);
-    t.restOf.resize(start[n]);
+    t.ends.resize(start[n]);
     for (Index i = 0; i < cloth.springs.size(); ++i) {
         const Spring& s = cloth.springs[i];
         for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
-            const uint32_t k = fill[end]++;
-            t.springOf[k] = i;
-            t.otherEnd[k] = other;
-            t.restOf[k] = s.rest;
+            t.ends[fill[end]++] = LimitCache::SpringEnd{i, other, s.rest};
         }
     }
     t.moved.assign(n, 0);
