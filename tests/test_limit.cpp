@@ -9,6 +9,7 @@
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/world.h"
+#include "mesh_of.h"
 #include "quiet_settings.h"
 
 #include <gtest/gtest.h>
@@ -44,12 +45,7 @@ PassResult onePass(float relaxation, bool pinA) {
     s.limit.enabled = true;
     s.limit.iterations = 1;
     s.limit.relaxation = relaxation;
-    MeshData m;
-    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    m.triangles = {{0, 1, 2}, {0, 2, 3}};
-    for (const auto& t : m.triangles)
-        m.cornerUVs.push_back({m.positions[t[0]].head<2>(), m.positions[t[1]].head<2>(), m.positions[t[2]].head<2>()});
-    EXPECT_EQ(w.rebuild(m), "");
+    EXPECT_EQ(w.rebuild(test::unitSquare()), "");
     Index a = 0, b = 0;
     for (Index p = 0; p < w.cloth.particleCount(); ++p) {
         if (w.cloth.rest[p] == Vec3d(0, 0, 0)) a = p;

@@ -1,10 +1,9 @@
 // tear.duration (limit.cpp): a spring tears once its strain has stayed over its threshold for the
 // duration (at least a sub-step, at most a frame), not in the sub-step a spike lasts; under a moving
-// hand at once. On a unit square whose particles are all pinned, one corner moved so that the bottom
-// edge is held at strain 0.5 (the limit cannot pull two pinned ends together): the load lasts, and
-// the sub-step in which it tears is known.
-#include "clothtear/mesh.h"
+// hand at once. On the unit square, every particle pinned and its bottom edge at strain 0.5
+// (test::stretchedPinnedSquare): the load lasts, and the sub-step in which it tears is known.
 #include "clothtear/world.h"
+#include "mesh_of.h"
 
 #include <gtest/gtest.h>
 
@@ -21,31 +20,20 @@ struct EdgeRun {
     uint64_t deferred = 0; // the report's tears_deferred
 };
 
-// Steps `frames` frames of `substeps` sub-steps with tear.duration = `durationSubsteps` sub-steps
+// Steps one frame of `substeps` sub-steps with tear.duration = `durationSubsteps` sub-steps
 // (less a hair: the duration rounds up to whole sub-steps); with `handMoves` a driver moves one
 // pinned corner (away from the bottom edge, by a micrometre a frame).
-EdgeRun stretchedEdge(float durationSubsteps, int substeps, int frames = 1, bool handMoves = false) {
+EdgeRun stretchedEdge(float durationSubsteps, int substeps, bool handMoves = false) {
     World w;
-    w.settings.gravity = GravitySettings{0.f, 0.f, 0.f};
-    w.settings.collision.ground = false;
-    w.settings.cloth.pin = PinMode::None;
+    test::stretchedPinnedSquare(w, 0.5);
     w.settings.time.substeps = substeps;
-    MeshData m;
-    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    m.triangles = {{0, 1, 2}, {0, 2, 3}};
-    for (const auto& t : m.triangles)
-        m.cornerUVs.push_back({m.positions[t[0]].head<2>(), m.positions[t[1]].head<2>(), m.positions[t[2]].head<2>()});
-    EXPECT_EQ(w.rebuild(m), "");
     EdgeRun run;
     run.dt = double(w.settings.time.frameDt) / substeps;
     w.settings.tear.duration = float((durationSubsteps - 0.01) * run.dt);
-    for (Index p = 0; p < w.cloth.particleCount(); ++p) w.cloth.setPinned(p, true);
-    for (Index p = 0; p < w.cloth.particleCount(); ++p)
-        if (w.cloth.rest[p] == Vec3d(1, 0, 0)) w.cloth.x[p].x() = 1.5f;
     if (handMoves)
         for (Index p = 0; p < w.cloth.particleCount(); ++p)
             if (w.cloth.rest[p] == Vec3d(0, 1, 0)) w.drivers.push_back(Driver{{p}, Vec3(0.f, 6e-5f, 0.f)});
-    for (int f = 0; f < frames; ++f) w.step();
+    w.step();
     if (!w.tearLog.events.empty()) run.firstTear = w.tearLog.events.front().time;
     run.deferred = w.profile.tearsDeferred;
     return run;
@@ -78,8 +66,8 @@ TEST(TearDuration, IsAtMostAFrame) {
 // Under a moving hand (a driver with a velocity) the hand's rips tear at once, as measured before the
 // duration (bench/README.md, "A tear needs its load to last").
 TEST(TearDuration, UnderAMovingHandTheLoadTearsAtOnce) {
-    const EdgeRun atOnce = stretchedEdge(1, 10, 1, true);
-    const EdgeRun four = stretchedEdge(4, 10, 1, true);
+    const EdgeRun atOnce = stretchedEdge(1, 10, true);
+    const EdgeRun four = stretchedEdge(4, 10, true);
     ASSERT_GE(four.firstTear, 0.0);
     EXPECT_NEAR(four.firstTear, atOnce.firstTear, 1e-3 * four.dt);
     EXPECT_EQ(four.deferred, 0u);

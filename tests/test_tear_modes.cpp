@@ -12,6 +12,7 @@
 #include "clothtear/pieces.h"
 #include "clothtear/tear.h"
 #include "clothtear/world.h"
+#include "mesh_of.h"
 
 #include <gtest/gtest.h>
 
@@ -26,14 +27,7 @@ namespace {
 
 // ========================================================================================== [HELPERS]
 
-MeshData meshOf(std::vector<Vec3d> positions, std::vector<std::array<Index, 3>> triangles) {
-    MeshData m;
-    m.positions = std::move(positions);
-    m.triangles = std::move(triangles);
-    for (const auto& t : m.triangles)
-        m.cornerUVs.push_back({m.positions[t[0]].head<2>(), m.positions[t[1]].head<2>(), m.positions[t[2]].head<2>()});
-    return m;
-}
+using test::meshOf;
 
 // The structural spring joining the particles at rest points ra and rb (kNone if none).
 Index springBetween(const Cloth& c, const Vec3d& ra, const Vec3d& rb) {
@@ -63,22 +57,14 @@ void stretchAlong(Cloth& c, const Vec3d& d, double e) {
 
 // ========================================================================================= [THRESHOLD]
 
-// A unit square of two triangles, every particle pinned, one corner moved along x so that the bottom
-// edge has strain e and no other structural spring is near a threshold (the right edge stretches by
-// less than e / 4). One sub-step: the strain scan finds the edge and the tear phase tears it if e
-// reaches tear.threshold, and not below (0.35 by default: 0.34 holds, 0.36 tears).
+// The unit square, pinned, its bottom edge at strain e (test::stretchedPinnedSquare). One sub-step: the
+// strain scan finds the edge and the tear phase tears it if e reaches tear.threshold, and not below
+// (0.35 by default: 0.34 holds, 0.36 tears).
 uint64_t tearsAtStrain(double e, float threshold) {
     World w;
-    w.settings.gravity = GravitySettings{0.f, 0.f, 0.f};
-    w.settings.collision.ground = false;
-    w.settings.cloth.pin = PinMode::None;
+    test::stretchedPinnedSquare(w, e);
     w.settings.tear.threshold = threshold;
-    EXPECT_EQ(w.rebuild(meshOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}})), "");
-    for (Index p = 0; p < w.cloth.particleCount(); ++p) w.cloth.setPinned(p, true);
-    const Index bottom = springBetween(w.cloth, {0, 0, 0}, {1, 0, 0});
-    EXPECT_NE(bottom, kNone);
-    for (Index p = 0; p < w.cloth.particleCount(); ++p)
-        if (w.cloth.rest[p] == Vec3d(1, 0, 0)) w.cloth.x[p].x() = float(1.0 + e);
+    EXPECT_NE(springBetween(w.cloth, {0, 0, 0}, {1, 0, 0}), kNone);
     w.substep();
     EXPECT_EQ(w.tearLog.total(), w.tearLog.counts[int(TearMode::Basic)]) << "an untorn square has no weak points";
     return w.tearLog.total();
