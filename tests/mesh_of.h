@@ -1,4 +1,4 @@
-// Tiny hand-built meshes for tests (shared by the limit, tear-mode and tear-duration tests): UVs taken
+// Tiny hand-built meshes for tests (shared by the limit and tear-mode tests): UVs taken
 // from the rest positions' x and y.
 #pragma once
 #include "clothtear/mesh.h"

@@ -109,7 +109,6 @@ struct TearSettings {
     float weakThreshold = 0.2f;     // strain  lower threshold for springs touching a weak point
     float onePointThreshold = 0.2f; // strain  threshold for one-point connections
     float seamStrength = 3.f;       // x threshold  springs touching a hem (pinned edge) tear at this multiple
-    float duration = 0.0015f;       // s       a spring tears once over its threshold this long
     int32_t maxPerStep = 64;        // count   cap on tears per sub-step
     bool validate = false;          // run the full topology validation after every tear
 };

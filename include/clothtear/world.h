@@ -39,9 +39,6 @@ struct StepProfile {
     // listing the springs the tethers' pull may have put over it (a scan found none): both exact.
     uint64_t limitTethersSkipped = 0;
     uint64_t limitExpandSkipped = 0;
-    // Springs over a tear threshold that the scan held because their load had not lasted
-    // tear.duration yet (limit.cpp), summed over sub-steps.
-    uint64_t tearsDeferred = 0;
     // Springs (structural and bend-shear) of the last spring phase that ran in groups of eight
     // evenly spaced ones (src/core/step/spring_groups.h), and their kernel ("avx2", "sse2" or
     // "generic": none grouped).

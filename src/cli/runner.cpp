@@ -111,8 +111,6 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         // sub-steps whose limit skipped the tethers / the listing after them (exact skips, limit.cpp)
         {"limit_tethers_skipped", w.profile.limitTethersSkipped},
         {"limit_expand_skipped", w.profile.limitExpandSkipped},
-        // springs over a tear threshold held because their load had not lasted tear.duration yet
-        {"tears_deferred", w.profile.tearsDeferred},
         {"spring_kernel", w.profile.springKernel}, // the spring groups' kernel (avx2, sse2, generic)
         {"grouped_springs", w.profile.groupedSprings}, // springs it ran in the last spring phase
         {"tears", tears},

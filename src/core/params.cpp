@@ -86,7 +86,6 @@ const ParamInfo kParams[] = {
     CT_F("tear.seam_strength", tear.seamStrength, 1, 10, 1, 100, "x threshold", "Springs touching a pinned edge (the hem) tear at this multiple of tear.threshold, before any weak point", false),
     CT_F("tear.weak_threshold", tear.weakThreshold, 0.02, 3, 0.001, 100, "", "Strain at which a spring touching a weak point tears", false),
     CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
-    CT_F("tear.duration", tear.duration, 0, 0.02, 0, 1, "s", "A spring tears once its strain has stayed over its threshold this long (at least one sub-step; 0: at once); a spike of a sub-step or two is the step's, not a load. Not for springs a moving hand (not a ball) stretches", false),
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
     CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
     CT_B("check.finite", check.finite, "Check for NaN/Inf after every phase of every sub-step; the report names the phase and particle (on in Debug builds)", false),

@@ -20,16 +20,6 @@
 // Measured: a 6 m cloth pinned on its side whips through its fold at 19 m/s between neighbours,
 // and one 1.3 ms sub-step took a spring from 0.084 to 0.39 (bench/README.md, "Overshoot is not a load").
 //
-// A tear needs its load to last (tear.duration, 1.5 ms: a sub-step at the thesis's 48 a side, two at
-// 96, three at 144; at most a frame): a spring over its threshold in fewer consecutive sub-steps is
-// limited, not torn.
-// A spring the step's motion carried past its threshold for a sub-step or two is the step's spike, not
-// a load: ball-r2-v3 (must slide over) tore at 144 a side when one sub-step took a spring under the
-// ball from 0.342 to 0.388 as the ball left the bottom edge. Where a hand moves it applies only to
-// springs under a ball: the drag and pull rips tear at once (measured: with the duration there they
-// started later and left scraps). A streak does not outlive its frame, so a World restored at a frame
-// boundary steps on bit for bit (bench/README.md, "A tear needs its load to last").
-//
 // Order and cost, all in one parallel region (LimitSolve::run):
 //   1. scan     reads every structural spring once (four at a time, kernels.h); most leave after one
 //               squared-length compare, no square root. Lists the candidates and the springs over
@@ -152,7 +142,6 @@ public:
     int passesRun = 0;     // passes that looked at a non-empty list (thread 0 writes it)
     bool tethersSkipped = false, expandSkipped = false; // (thread 0 writes them)
     bool prefilterFailed = false; // the prefilter ran and found springs over: expand ran anyway
-    size_t deferred[kMaxThreadSlots] = {}; // per thread: springs over a threshold held for tear.duration
 
 private:
     // Is an end of spring s under a ball this sub-step?
@@ -179,16 +168,6 @@ private:
         if (!hardCap(s)) return false;
         const Vec3 start = (x_[s.b] - v_[s.b] * ctx_.dt) - (x_[s.a] - v_[s.a] * ctx_.dt);
         return start.squaredNorm() <= sq(s.rest * doneRatio_);
-    }
-    // Has spring i (over its threshold at this scan) been over it for less than tear.duration (see
-    // the top of this file)? Counts the streak; read only for springs over a threshold. Where a hand
-    // moves, only springs under a ball wait: the hand's rips were measured tearing at once.
-    bool overloadTooShort(const Spring& s, Index i) const {
-        if (!streaks_ || !(holdsOvershoot_ || underBall(s))) return false;
-        TearStreaks& T = *streaks_;
-        if (T.last[i] + 1 != T.now || T.since[i] < T.frameStart) T.since[i] = T.now;
-        T.last[i] = T.now;
-        return T.now - T.since[i] + 1 < durationSteps_;
     }
     // A tear candidate of this sub-step, left to the tear phase. A spring too short to halve is
     // limited even as a candidate: if its tear fails (no weak-point path, too short for a basic
@@ -267,9 +246,6 @@ private:
     size_t movedCount_[kMaxThreadSlots] = {};       // particles this thread's tethers moved
     size_t overAfterTethers_[kMaxThreadSlots] = {}; // countMaybeOver of this thread's springs
     int work_[kMaxThreadSlots] = {};
-    // tear.duration in sub-steps (at least one), and the streaks when it is more than one.
-    const uint32_t durationSteps_;
-    TearStreaks* streaks_;
 };
 
 LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
@@ -285,17 +261,8 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
       candidate_(ctx.limiting ? state.limit.candidate.data() : nullptr),
-      movedIn_(ctx.limiting ? state.limit.moved.data() : nullptr),
-      durationSteps_(ctx.limiting ? tearDurationSteps(ctx.settings->tear.duration, ctx.dt,
-                                                      state.substepsNow > 0 ? state.substepsNow : ctx.settings->time.substeps)
-                                   : 1),
-      streaks_(durationSteps_ > 1 ? &state.tearStreaks : nullptr) {
+      movedIn_(ctx.limiting ? state.limit.moved.data() : nullptr) {
     if (ctx.limiting) C_.passStamp += uint32_t(iterations_) + 1; // the passes', then the tethers' stamp
-    if (streaks_) {
-        ++streaks_->now;
-        streaks_->since.resize(cloth.springs.size(), 0); // a new spring (a tear's half) has no streak
-        streaks_->last.resize(cloth.springs.size(), 0);
-    }
 }
 
 // Every structural spring once, most of them with one compare and no square root: tear candidates
@@ -315,11 +282,8 @@ void LimitSolve::scan(int t, int nt) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
         if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
-            const bool waits = overloadTooShort(s, Index(i)); // first: it counts the streak
-            if ((((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i))) || overshotFromWithinLimit(s) || waits) {
+            if ((((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i))) || overshotFromWithinLimit(s))
                 T_.held[t].push_back(Index(i));
-                deferred[t] += waits;
-            }
             else {
                 found.push_back(TearCandidate{Index(i), std::sqrt(len2) / s.rest - 1.f});
                 if (candidate_) candidate_[i] = 1;
@@ -663,7 +627,6 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     ctx.profile->limitPasses += uint64_t(solve.passesRun);
     ctx.profile->limitTethersSkipped += solve.tethersSkipped;
     ctx.profile->limitExpandSkipped += solve.expandSkipped;
-    for (size_t d : solve.deferred) ctx.profile->tearsDeferred += d;
     LimitCache& C = state.limit;
     if (solve.prefilterFailed) C.prefilterWait = kPrefilterWait;
     else if (C.prefilterWait > 0) --C.prefilterWait;

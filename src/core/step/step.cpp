@@ -123,7 +123,6 @@ void World::step() {
         return;
     }
     wakePiecesIfTouched(*this, state);
-    state.tearStreaks.frameStart = state.tearStreaks.now + 1; // no streak outlives its frame (limit.cpp)
     if (settings.sleep.enabled) state.sleep.frameStart = cloth.x;
     // A ball near the cloth or a hand moving it: the guard's conservative step, springs capped one
     // by one (stability.cpp). Their tears are made in one sub-step (bench/README.md, "Ball outcomes

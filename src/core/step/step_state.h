@@ -8,9 +8,7 @@
 #include "revisions.h"
 #include "spring_groups.h"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -150,23 +148,6 @@ struct GuardCache {
     double capsStep = 0;   // s, the step without per-spring caps (while interacting, step.cpp)
 };
 
-// tear.duration (limit.cpp): per structural spring, the sub-step since which its strain has been over
-// its tear threshold and the last sub-step it was (serials, `now` the current one). A streak that did
-// not start in this frame (since < frameStart, World::step) starts anew, so nothing here outlives a
-// frame and a World restored from a checkpoint tears as the one it was taken from.
-struct TearStreaks {
-    std::vector<uint32_t> since, last;
-    uint32_t now = 0;
-    uint32_t frameStart = 1;
-};
-
-// tear.duration (s) in sub-steps of dt: at least one (0: tear at once), at most the frame's
-// `substeps` (a streak ends with its frame).
-inline uint32_t tearDurationSteps(float duration, float dt, int substeps) {
-    const double steps = std::min(std::ceil(double(duration) / double(dt) - 1e-6), double(substeps));
-    return steps > 1.0 ? uint32_t(steps) : 1u;
-}
-
 // What sleep.cpp remembers of the cloth it put to sleep.
 struct SleepState {
     double restSince = -1; // s, simulated time since which the cloth is at rest; -1: moving
@@ -228,7 +209,6 @@ struct StepState {
     // This frame a ball is near the cloth or a hand (driver) moves: the guard takes its conservative
     // step and caps springs one by one (step.cpp, World::guardSubsteps).
     bool interacting = false;
-    TearStreaks tearStreaks;
     SleepState sleep;
 };
 
