@@ -321,12 +321,18 @@ void App::frame(bool last) {
     glfwSwapBuffers(window_);
     const double swapEnd = glfwGetTime();
     if (overlap) simThread_->wait();
+    const double waitEnd = glfwGetTime();
     afterSteps();
     if (!screenshotSaid.empty()) state_.say(screenshotSaid);
     audioOut_.setMuted(state_.sound.muted);
     audioOut_.setVolume(state_.sound.volume);
     state_.stats.drawMs = 0.9 * state_.stats.drawMs + 0.1 * 1000.0 * (drawEnd - drawStart);
     state_.stats.swapMs = 0.9 * state_.stats.swapMs + 0.1 * 1000.0 * (swapEnd - drawEnd);
+    RunCosts& run = state_.runCosts;
+    run.drawMs += 1000.0 * (drawEnd - drawStart);
+    run.swapMs += 1000.0 * (swapEnd - drawEnd);
+    run.waitMs += 1000.0 * (waitEnd - swapEnd);
+    ++run.frames;
     state_.stats.clothTrianglesDrawn = renderer_.clothTriangles();
     input_.endFrame();
     updateStats(now);
@@ -460,6 +466,24 @@ std::string App::writeScreenshot(const std::string& path) {
     return savePng(path, img);
 }
 
+// Per frame over the whole run (draw, swap, the wait for the simulation thread, the frame itself) and
+// per world.step() (step_ms: wall-clock, on the simulation thread). The report's draw_ms, swap_ms
+// and step_ms are the stats pane's smoothed figures of the last frames.
+nlohmann::json App::meanCosts(double wallSeconds) const {
+    const RunCosts& run = state_.runCosts;
+    const double frames = double(run.frames), steps = double(state_.clock.stepsTimed);
+    auto per = [](double total, double count) { return count > 0 ? total / count : 0.0; };
+    return {
+        {"frames", run.frames},
+        {"frame_ms", per(1000.0 * wallSeconds, double(state_.frame))},
+        {"draw_ms", per(run.drawMs, frames)},
+        {"swap_ms", per(run.swapMs, frames)},
+        {"wait_ms", per(run.waitMs, frames)},
+        {"steps", state_.clock.stepsTimed},
+        {"step_ms", per(state_.clock.stepMsTotal, steps)},
+    };
+}
+
 nlohmann::json App::report(double wallSeconds) const {
     nlohmann::json r = makeReport(world_, state_.scene, wallSeconds);
     if (!loaded_.is_null()) r["loaded"] = loaded_;
@@ -482,6 +506,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},
         {"step_ms", state_.clock.stepCostMs},
+        {"mean", meanCosts(wallSeconds)},
         {"texture", state_.textureName},
         {"texture_error", state_.textureError},
         {"mesh_error", state_.meshError},

@@ -38,6 +38,7 @@ private:
     void serveWorldFile();
     std::string writeScreenshot(const std::string& path);
     nlohmann::json report(double wallSeconds) const;
+    nlohmann::json meanCosts(double wallSeconds) const; // the report's "mean": over the whole run
     void loadBuiltInTexture(bool numbered); // the woven default, or the numbered debug texture
     // app_input.cpp
     void installCallbacks();

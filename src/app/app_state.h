@@ -62,6 +62,16 @@ struct Stats {
     uint64_t stepsAtStart = 0;
 };
 
+// Summed over the whole run, for the report's means (App::report, "mean"): the smoothed figures of
+// Stats follow the last frames only, and a run whose load changes (a drag that tears, then holds)
+// ends with the cost of its quiet frames.
+struct RunCosts {
+    double drawMs = 0; // issuing the frame's draws
+    double swapMs = 0; // glfwSwapBuffers
+    double waitMs = 0; // waiting for the frame's steps on the simulation thread (the pipeline)
+    uint64_t frames = 0;
+};
+
 inline constexpr uint8_t kBallThrown = 1, kBallTouched = 2;
 
 // The stats pane's count of torn pieces (findPieces), recomputed only when the cloth's topology or
@@ -134,6 +144,7 @@ struct AppState {
     int ballsHitCloth = 0;         // thrown balls that touched the cloth
     std::vector<uint8_t> ballFlags; // per world.balls entry: kBallThrown | kBallTouched
     Stats stats;
+    RunCosts runCosts;
 
     void say(std::string text) {
         message = std::move(text);

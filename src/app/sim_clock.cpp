@@ -24,6 +24,8 @@ int SimClock::advance(double realSeconds, double frameDt) {
 
 void SimClock::reportStepCost(double ms) {
     stepCostMs = stepCostMs <= 0.0 ? ms : 0.8 * stepCostMs + 0.2 * ms;
+    stepMsTotal += ms;
+    ++stepsTimed;
 }
 
 } // namespace clothtear::app

@@ -204,6 +204,28 @@ TEST(AppWindow, TruncatedScriptIsRefusedWithFileAndLine) {
     EXPECT_EQ(r.status, 0) << r.output;
 }
 
+// The report's means over the run (app.mean): every drawn frame and every step counted, the steps'
+// and the frames' parts within the run's wall time; without the pipeline nothing waits for the
+// simulation thread.
+namespace {
+void expectMeansAddUp(const nlohmann::json& report, bool noPipeline) {
+    const auto& mean = report["app"]["mean"];
+    const double wallMs = 1000.0 * report["wall_seconds"].get<double>();
+    const double frames = mean["frames"].get<double>(), steps = mean["steps"].get<double>();
+    EXPECT_EQ(mean["frames"].get<int>(), report["app"]["frames"].get<int>());
+    EXPECT_EQ(mean["steps"].get<int>(), report["steps"].get<int>()) << "every world step timed";
+    EXPECT_NEAR(mean["frame_ms"].get<double>() * frames, wallMs, 1e-6 * wallMs);
+    EXPECT_GT(mean["step_ms"].get<double>(), 0.0);
+    EXPECT_LE(mean["step_ms"].get<double>() * steps, wallMs);
+    const double parts = mean["draw_ms"].get<double>() + mean["swap_ms"].get<double>() + mean["wait_ms"].get<double>();
+    EXPECT_GT(mean["swap_ms"].get<double>(), 0.0);
+    EXPECT_LE(parts * frames, wallMs);
+    if (noPipeline) {
+        EXPECT_LT(mean["wait_ms"].get<double>(), 0.05) << "no simulation thread to wait for";
+    }
+}
+} // namespace
+
 // The same scene, parameters and input script give the same state hash: the default 40 x 40 cloth
 // on one thread, and a 64 x 64 one on two (above 2048 particles the step uses every thread). The
 // third run steps and draws one after the other (--no-pipeline): the pipeline, stepping a frame on
@@ -224,6 +246,7 @@ TEST(AppWindow, ReplayIsBitIdenticalRunToRun) {
             tears[run] = report["tears_total"].get<int>();
             EXPECT_GT(tears[run], 0) << "the replayed drag tears";
             hashes[run] = report["state_hash"];
+            expectMeansAddUp(report, run == 2);
         }
         EXPECT_EQ(hashes[0], hashes[1]) << threads << " thread(s)";
         EXPECT_EQ(hashes[0], hashes[2]) << threads << " thread(s), pipeline against --no-pipeline";
