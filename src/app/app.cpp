@@ -332,7 +332,6 @@ void App::frame(bool last) {
     run.drawMs += 1000.0 * (drawEnd - drawStart);
     run.swapMs += 1000.0 * (swapEnd - drawEnd);
     run.waitMs += 1000.0 * (waitEnd - swapEnd);
-    ++run.frames;
     state_.stats.clothTrianglesDrawn = renderer_.clothTriangles();
     input_.endFrame();
     updateStats(now);
@@ -466,16 +465,15 @@ std::string App::writeScreenshot(const std::string& path) {
     return savePng(path, img);
 }
 
-// Per frame over the whole run (draw, swap, the wait for the simulation thread, the frame itself) and
-// per world.step() (step_ms: wall-clock, on the simulation thread). The report's draw_ms, swap_ms
+// Per frame over the whole run (its app.frames frames: draw, swap, the wait for the simulation
+// thread, the frame itself) and per world.step() (step_ms: wall-clock, on the simulation thread). The report's draw_ms, swap_ms
 // and step_ms are the stats pane's smoothed figures of the last frames.
 nlohmann::json App::meanCosts(double wallSeconds) const {
     const RunCosts& run = state_.runCosts;
-    const double frames = double(run.frames), steps = double(state_.clock.stepsTimed);
+    const double frames = double(state_.frame), steps = double(state_.clock.stepsTimed);
     auto per = [](double total, double count) { return count > 0 ? total / count : 0.0; };
     return {
-        {"frames", run.frames},
-        {"frame_ms", per(1000.0 * wallSeconds, double(state_.frame))},
+        {"frame_ms", per(1000.0 * wallSeconds, frames)},
         {"draw_ms", per(run.drawMs, frames)},
         {"swap_ms", per(run.swapMs, frames)},
         {"wait_ms", per(run.waitMs, frames)},

@@ -64,12 +64,11 @@ struct Stats {
 
 // Summed over the whole run, for the report's means (App::report, "mean"): the smoothed figures of
 // Stats follow the last frames only, and a run whose load changes (a drag that tears, then holds)
-// ends with the cost of its quiet frames.
+// ends with the cost of its quiet frames. The sums run over AppState::frame frames.
 struct RunCosts {
     double drawMs = 0; // issuing the frame's draws
     double swapMs = 0; // glfwSwapBuffers
     double waitMs = 0; // waiting for the frame's steps on the simulation thread (the pipeline)
-    uint64_t frames = 0;
 };
 
 inline constexpr uint8_t kBallThrown = 1, kBallTouched = 2;
