@@ -324,9 +324,14 @@ void drawStatsPane(AppState& st, const World& world) {
         ImGui::SetTooltip("Sub-steps of the last frame: the stability guard takes as many as the material\n"
                           "needs to keep the stiffness you set (a finer or smaller cloth needs more),\n"
                           "up to time.max_substeps.");
-    if (world.guardCappedSprings > 0)
+    // A capped spring may keep all of its stiffness and lose damping only (the light particles a
+    // ball's tears make): "at 100% stiffness" under "softer than set" read as a contradiction.
+    if (world.guardCappedSprings > 0 && world.guardStiffnessKept < 0.995f)
         ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "softer than set, to stay stable:\n  %zu springs at %.0f%% stiffness",
                            world.guardCappedSprings, 100.0 * world.guardStiffnessKept);
+    else if (world.guardCappedSprings > 0)
+        ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "less damped than set, to stay stable:\n  %zu springs at %.0f%% damping",
+                           world.guardCappedSprings, 100.0 * world.guardDampingKept);
     else
         ImGui::TextDisabled("stiffness as you set it");
     if (ImGui::IsItemHovered())
