@@ -99,6 +99,8 @@ struct CollisionSettings {
     float groundHeight = -3.f; // m       height of the ground plane
     float friction = 0.3f;     // Coulomb coefficient between cloth and colliders
     float thickness = 0.005f;  // m       cloth half-thickness kept between cloth and colliders
+    float stretchBand = 0.05f; // m       fabric within this rest distance of a ball's contact may stretch
+                               //         to the tear threshold, like the contact itself (limit.cpp)
     float ballDensity = 200.f; // kg/m^3, informational default for the ball tool
     bool broadPhase = true;    //         ball phases test only the triangles of particles near each ball
 };

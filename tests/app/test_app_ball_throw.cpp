@@ -3,6 +3,7 @@
 #include "camera.h"
 #include "tools.h"
 
+#include "clothtear/pieces.h"
 #include "clothtear/scenes.h"
 
 #include <gtest/gtest.h>
@@ -24,6 +25,8 @@ struct Flight {
     float backSpeed = 0;    // the fastest it moved back towards the camera after touching, m/s
     int tears = 0;
     float startDistance = 0, endDistance = 0; // of the camera framing the world (V) before and after
+    float endDistanceWithoutBall = 0;         // framing the same world with its ball taken out
+    float farPieceShare = 0; // largest share of the rest area in a piece centred 2 m or more from the largest piece
 };
 
 Flight throwFromStartCamera(const std::string& scene, std::vector<std::string> sets, int frames) {
@@ -58,6 +61,31 @@ Flight throwFromStartCamera(const std::string& scene, std::vector<std::string> s
     OrbitCamera after;
     frameWorld(after, w);
     f.endDistance = after.distance;
+    World noBall = w;
+    noBall.balls.clear();
+    OrbitCamera without;
+    frameWorld(without, noBall);
+    f.endDistanceWithoutBall = without.distance;
+    // The pieces (connected islands): rest area and mean position.
+    const std::vector<Index> label = pieceLabels(w.cloth);
+    const size_t n = w.cloth.particleCount();
+    std::vector<double> area(n, 0.0);
+    std::vector<Vec3> sum(n, Vec3::Zero());
+    std::vector<int> count(n, 0);
+    double total = 0;
+    for (const Triangle& t : w.cloth.triangles) {
+        if (label[t.p[0]] != kNone) area[label[t.p[0]]] += t.restArea;
+        total += t.restArea;
+    }
+    for (Index p = 0; p < n; ++p)
+        if (label[p] != kNone) sum[label[p]] += w.cloth.x[p], ++count[label[p]];
+    Index main = 0;
+    for (Index l = 0; l < n; ++l)
+        if (area[l] > area[main]) main = l;
+    const Vec3 mainAt = sum[main] / float(count[main]);
+    for (Index l = 0; l < n; ++l)
+        if (count[l] > 0 && l != main && (sum[l] / float(count[l]) - mainAt).norm() >= 2.f)
+            f.farPieceShare = std::max(f.farPieceShare, float(area[l] / total));
     return f;
 }
 
@@ -84,8 +112,16 @@ TEST(AppBallThrow, DefaultThrowFromTheStartCameraReachesAndNeverComesBack) {
         EXPECT_TRUE(f.crossed) << what << ": and goes through";
         EXPECT_FALSE(f.cameBack) << what;
         EXPECT_LT(f.backSpeed, 1.f) << what << ": m/s back towards the camera";
-        // V frames the cloth and its pieces, not the ball that flew on (issue 13: V zoomed far out).
-        EXPECT_LT(f.endDistance, 1.5f * f.startDistance) << what;
+        // V frames the cloth and its pieces, not the ball that flew on (issue 13: V zoomed far out), nor
+        // scraps: it zooms out by half again only for a piece of 5 % of the cloth or more lying 2 m away
+        // (the disc a ball punches out and carries to the ground, since the ball stretches a band of
+        // fabric: bench/README.md, "The fabric a ball stretches").
+        EXPECT_NEAR(f.endDistance, f.endDistanceWithoutBall, 1e-3f * f.endDistanceWithoutBall) << what;
+        if (f.farPieceShare < 0.05f) {
+            EXPECT_LT(f.endDistance, 1.5f * f.startDistance) << what;
+        }
+        std::printf("%s: %d tears, V at %.2f m (start %.2f), largest far piece %.1f %% of the cloth\n", what.c_str(),
+                    f.tears, f.endDistance, f.startDistance, 100.f * f.farPieceShare);
     }
 }
 
