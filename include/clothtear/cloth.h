@@ -20,7 +20,8 @@ enum ParticleFlags : uint8_t {
     kPinned = 1u << 0, // never moved by forces, limiting or collisions (may be moved by a driver/tool)
     kWeak = 1u << 1,   // tip of a tear: springs touching it tear at the weak threshold (Onal 3.2.2)
     kHinge = 1u << 2,  // one-point connection: two parts of the cloth meet only here (Onal 3.2.3)
-    kTouched = 1u << 3, // under a ball this sub-step (set by the collide phase, cleared by the contact phase)
+    kTouched = 1u << 3, // under a ball this sub-step (set by the collide phase, cleared by the contact phase;
+                        // during the limit also the fabric within collision.stretch_band of it)
     kHem = 1u << 4,     // on an edge the pin mode pinned: springs touching it tear at tear.seam_strength x the
                         // threshold (a sewn hem stays strong when a tool unpins it)
     kAsleep = 1u << 5,  // in a torn piece that settled (step/piece_sleep.cpp): inverse mass 0 and no velocity
