@@ -623,7 +623,6 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
                 dist[p] = 0.f;
                 queue.push_back(p);
             }
-    const size_t corners = queue.size();
     for (size_t k = 0; k < queue.size(); ++k) { // shortest rest distances, relaxed in queue order
         const Index p = queue[k];
         for (uint32_t e = C.springStart[p]; e < C.springStart[p + 1]; ++e) {
@@ -635,11 +634,8 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
             queue.push_back(q);
         }
     }
-    for (size_t k = 0; k < corners; ++k) dist[queue[k]] = kFar;
-    for (Index q : band) {
-        dist[q] = kFar;
-        cloth.flags[q] |= kTouched;
-    }
+    for (Index p : queue) dist[p] = kFar; // every particle it reached (the corners, the band)
+    for (Index q : band) cloth.flags[q] |= kTouched;
 }
 
 // Per-thread work arrays sized for this cloth and emptied for the sub-step.
