@@ -616,7 +616,8 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
     constexpr float kFar = std::numeric_limits<float>::infinity();
     std::vector<float>& dist = state.bandDistance;
     dist.resize(cloth.particleCount(), kFar);
-    std::vector<Index> queue; // particles whose distance went down, in the order it did
+    std::vector<Index>& queue = state.bandQueue; // particles whose distance went down, in the order it did
+    queue.clear();
     for (const BallContact& c : state.contacts)
         for (Index p : cloth.triangles[c.triangle].p)
             if (dist[p] != 0.f) {

@@ -198,9 +198,11 @@ struct StepState {
     std::vector<BallContact> contacts;          // from the collide phase, for the contact phase
     std::vector<int32_t> contactOf;             // per triangle: its entry in contacts, -1
     // The fabric a ball stretches beyond its contacts this sub-step (limit.cpp, markStretchBand),
-    // and per particle its rest distance from them (infinite outside the band, between sub-steps).
+    // per particle its rest distance from them (infinite outside the band, between sub-steps), and
+    // the search's queue.
     std::vector<Index> stretchBand;
     std::vector<float> bandDistance;
+    std::vector<Index> bandQueue;
     std::vector<Vec3> externalForce;            // reference integrators: N per particle (wind)
     std::vector<Vec3> xpbdDx;                   // XPBD: displacements within the sub-step
     std::vector<Vec3d> kesHingeForce;           // kes: the hinges' forces of this sub-step (N)
