@@ -1,6 +1,8 @@
 // Tiny helpers over OpenMP: a fixed, deterministic split of [0, n) into one contiguous chunk per
 // thread. Kernels scatter into per-thread buffers, so results never depend on thread timing.
 #pragma once
+#include "float_env.h"
+
 #include <algorithm>
 #include <cstddef>
 #if CLOTHTEAR_HAVE_OPENMP
@@ -47,8 +49,14 @@ inline constexpr size_t kParallelWork = 4096; // smallest amount of work paralle
 template <class Body> void parallelRegion(size_t work, int threads, Body&& body) {
 #if CLOTHTEAR_HAVE_OPENMP
     if (threads > 1 && work >= kParallelWork) {
+        const unsigned callerFlush = FlushSubnormals::callerFlushBits();
 #pragma omp parallel num_threads(threads)
-        body(omp_get_thread_num(), omp_get_num_threads());
+        {
+            // Each thread's own MXCSR (float_env.h); the caller's thread is thread 0.
+            const int t = omp_get_thread_num();
+            const FlushSubnormals flush = t == 0 ? FlushSubnormals() : FlushSubnormals::onWorker(callerFlush);
+            body(t, omp_get_num_threads());
+        }
         return;
     }
 #endif

@@ -4,6 +4,7 @@
 #include "clothtear/world.h"
 
 #include "finite_check.h"
+#include "float_env.h"
 #include "parallel.h"
 #include "phase_timer.h"
 #include "phases.h"
@@ -114,6 +115,7 @@ void phaseBookkeeping(World& w) {
 } // namespace
 
 void World::step() {
+    const FlushSubnormals flush; // float_env.h
     applySettings();
     StepState& state = *state_;
     if (stayAsleep(*this, state)) {
@@ -176,6 +178,7 @@ int World::guardSubsteps() {
 }
 
 void World::substep() {
+    const FlushSubnormals flush; // float_env.h (step() set it already; substep() is public too)
     StepState& state = *state_;
     const int substeps = state.substepsNow > 0 ? state.substepsNow : settings.time.substeps;
     const StepContext ctx = makeStepContext(*this, state, settings.time.frameDt / float(substeps));
