@@ -28,7 +28,8 @@ bool productIsSubnormal(float a, float b) {
 // leaves of a hand's or a ball's push sideways.
 World curtainWithSubnormalOffsets() {
     World w;
-    EXPECT_EQ(loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=65", "cloth.resolution_y=65"}), "");
+    const std::vector<std::string> sets{"cloth.resolution_x=65", "cloth.resolution_y=65"};
+    EXPECT_EQ(loadScene(w, "curtain", sets), "");
     for (Index p = 0; p < w.cloth.particleCount(); ++p)
         if (w.cloth.invMass[p] > 0.f) {
             w.cloth.x[p].z() = kSubnormal;
@@ -42,7 +43,7 @@ size_t subnormalComponentsOfFreeParticles(const World& w) {
     for (Index p = 0; p < w.cloth.particleCount(); ++p) {
         if (w.cloth.invMass[p] == 0.f) continue;
         for (int c = 0; c < 3; ++c)
-            count += (std::fpclassify(w.cloth.x[p][c]) == FP_SUBNORMAL) + (std::fpclassify(w.cloth.v[p][c]) == FP_SUBNORMAL);
+            for (float value : {w.cloth.x[p][c], w.cloth.v[p][c]}) count += std::fpclassify(value) == FP_SUBNORMAL;
     }
     return count;
 }

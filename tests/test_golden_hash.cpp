@@ -38,7 +38,7 @@ struct GoldenCase {
 const GoldenCase kGolden[] = {
     {"curtain", "curtain", {"cloth.resolution_x=24", "cloth.resolution_y=24"}, 60, true, "0xa1dc496d4f3553ad"},
     {"flag", "flag", {"cloth.resolution_x=24", "cloth.resolution_y=16"}, 60, false, "0x14e42e7438f8e79a"},
-    {"drop", "drop", {"cloth.resolution_x=24", "cloth.resolution_y=24"}, 60, false, "0x10597c5dda9b378f"},
+    {"drop", "drop", {"cloth.resolution_x=24", "cloth.resolution_y=24"}, 60, false, "0xc40ceff3d41ff065"},
     {"irregular", "irregular", {"cloth.resolution_x=20", "cloth.resolution_y=20"}, 60, true, "0x94739e3255d35b27"},
     {"tension-notch", "tension", {"tension.notch=1", "cloth.resolution_x=32", "cloth.resolution_y=32"}, 90, false,
      "0x45ad8c0e13df66d3"},

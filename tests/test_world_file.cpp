@@ -224,7 +224,9 @@ TEST(WorldFile, ContinuationTestCanFail) {
     for (int f = 0; f < 10; ++f) implicit.step();
     bytes = bytesOf(implicit);
     const size_t free = 3 * 56; // 64 particles, 8 pinned
-    const size_t still = 8 + 2 * 64; // then the particles' still frames (version 4) end the file
+    // Then the particles' still frames (version 4) and the balls' sleep (version 5, no balls here)
+    // end the file.
+    const size_t still = 8 + 2 * 64 + 8;
     uint64_t m = 0;
     std::memcpy(&m, bytes.data() + bytes.size() - still - 8 * free - 8, 8);
     ASSERT_EQ(m, free) << "the warm start is the last values before the still frames";
@@ -316,10 +318,10 @@ TEST(WorldFileErrors, WrongMagicAndVersions) {
     std::string bytes = bytesOf(smallTornWorld());
     EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
               "bad.ctw: byte 0 (header): not a clothtear world file (it does not start with 'clothtear world\\x0a')");
-    poke<uint32_t>(bytes, 16, 5);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 5: written by a newer clothtear; this one reads versions 2 to 4");
+    poke<uint32_t>(bytes, 16, 6);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): version 6: written by a newer clothtear; this one reads versions 2 to 5");
     poke<uint32_t>(bytes, 16, 1);
-    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads versions 2 to 4)");
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte 16 (header): unknown version 1 (this clothtear reads versions 2 to 5)");
 }
 
 TEST(WorldFileErrors, CountsThatLieAllocateNothing) {
@@ -339,13 +341,40 @@ TEST(WorldFileErrors, CountsThatLieAllocateNothing) {
     bytes = good;
     poke<uint64_t>(bytes, sectionBody(bytes, "TRIS") - 8, 1ull << 40);
     EXPECT_NE(refusal(bytes).find("(triangles): the section says it has 1099511627776 bytes"), std::string::npos);
-    // The torn pieces' still frames (the end of the step state): one per particle, or none.
+    // The torn pieces' still frames (near the end of the step state): one per particle, or none.
     const size_t n = smallTornWorld().cloth.particleCount();
-    const size_t still = good.size() - 2 * n - 8; // the file's last values
+    const size_t balls = 8; // then the balls' sleep ends the file (version 5; no balls here)
+    const size_t still = good.size() - balls - 2 * n - 8;
     bytes = good;
     poke<uint64_t>(bytes, still, uint64_t(n - 1));
     EXPECT_EQ(refusal(bytes), "bad.ctw: byte " + std::to_string(still) + " (step state): still frames for " +
                                   std::to_string(n - 1) + " particles; the cloth has " + std::to_string(n));
+    // The balls' sleep: one record per ball.
+    bytes = good;
+    poke<uint64_t>(bytes, good.size() - balls, 3);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte " + std::to_string(good.size() - balls) + " (step state): sleep of 3 balls; the world has 0");
+}
+
+// A ball's sleep record: 0 or 1, and a sleeping ball has no velocity.
+TEST(WorldFileErrors, BallSleepRecordsAreChecked) {
+    World w = smallTornWorld();
+    Ball b;
+    b.x = Vec3(5.f, 0.f, 0.f);
+    b.asleep = true; // as the step leaves it: velocity 0
+    b.stillFrames = 77;
+    w.balls.push_back(b);
+    const std::string good = bytesOf(w);
+    const Result<World> back = parseWorld(good, "w.ctw");
+    ASSERT_TRUE(back.ok()) << back.error;
+    ASSERT_EQ(back.value.balls.size(), 1u);
+    EXPECT_TRUE(back.value.balls[0].asleep);
+    EXPECT_EQ(back.value.balls[0].stillFrames, 77);
+    std::string bytes = good;
+    bytes[bytes.size() - 1] = 2;
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte " + std::to_string(bytes.size() - 1) + " (step state): ball 0: asleep is 2, not 0 or 1");
+    w.balls[0].v = Vec3(0.f, 1.f, 0.f);
+    EXPECT_EQ(refusal(bytesOf(w)), "bad.ctw: byte " + std::to_string(good.size() - 1) +
+                                       " (step state): ball 0 is asleep with a velocity (a sleeping ball has none)");
 }
 
 TEST(WorldFileErrors, NonFiniteOrFarValuesNameTheirField) {

@@ -52,6 +52,12 @@ struct Ball {
     Vec3 v = Vec3::Zero();
     float radius = 0.5f; // m
     float mass = 2.f;    // kg; 0: immovable
+    // Sleep (src/core/step/ball_sleep.cpp): a ball at rest with no moving cloth within its reach is
+    // not simulated (asleep, velocity 0) until something can move it. The step sets and clears both;
+    // code that moves a ball from outside the step clears `asleep` (or calls World::wake()), and a
+    // sleeping ball given a velocity wakes by itself.
+    uint16_t stillFrames = 0; // frames in a row it moved slower than sleep.speed (saturating)
+    bool asleep = false;
 };
 
 // Moves a set of particles at a constant velocity (pinned while driven): the pull and tension scenes,

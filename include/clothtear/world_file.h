@@ -24,7 +24,9 @@ namespace clothtear {
 //            reads as one without (a linear cloth, or kes hinges at rest).
 // Version 4: the frames each particle has been still (torn pieces' sleep) at the end of the step
 //            state; an older file's particles start counting at the load.
-inline constexpr uint32_t kWorldFileVersion = 4;
+// Version 5: the balls' sleep (Ball::stillFrames, Ball::asleep) at the end of the step state; an
+//            older file's balls are awake and start counting at the load.
+inline constexpr uint32_t kWorldFileVersion = 5;
 inline constexpr uint32_t kOldestWorldFileVersion = 2;
 
 // Largest world file loadWorld reads (refused before reading).

@@ -70,7 +70,8 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
     for (uint8_t f : c.flags) pinned += (f & kPinned) != 0, weak += (f & kWeak) != 0;
     json balls = json::array();
     for (const Ball& b : w.balls)
-        balls.push_back({{"x", {b.x.x(), b.x.y(), b.x.z()}}, {"v", {b.v.x(), b.v.y(), b.v.z()}}, {"radius", b.radius}});
+        balls.push_back({{"x", {b.x.x(), b.x.y(), b.x.z()}}, {"v", {b.v.x(), b.v.y(), b.v.z()}}, {"radius", b.radius},
+                         {"asleep", b.asleep}});
     double minY = 1e30, maxY = -1e30;
     for (const Vec3& x : c.x) minY = std::min<double>(minY, x.y()), maxY = std::max<double>(maxY, x.y());
     return json{

@@ -397,6 +397,21 @@ void readStepState(ByteReader& r, World& w, StepState& s, uint32_t version) {
         sleep.stillFrames.resize(r.count(still, 2, "still frame count"));
         for (uint16_t& f : sleep.stillFrames) f = r.u16();
     }
+    sleep.ballSettings = w.settings; // as after a frame: the next one compares with these
+    if (version >= 5) { // balls' sleep (ball_sleep.cpp)
+        const uint64_t balls = r.u64();
+        if (balls != w.balls.size())
+            r.fail("sleep of " + std::to_string(balls) + " balls; the world has " + std::to_string(w.balls.size()));
+        for (size_t i = 0; i < w.balls.size(); ++i) {
+            Ball& b = w.balls[i];
+            b.stillFrames = r.u16();
+            const uint8_t asleep = r.u8();
+            if (asleep > 1) r.fail("ball " + std::to_string(i) + ": asleep is " + std::to_string(asleep) + ", not 0 or 1");
+            if (asleep && b.v != Vec3::Zero())
+                r.fail("ball " + std::to_string(i) + " is asleep with a velocity (a sleeping ball has none)");
+            b.asleep = asleep == 1;
+        }
+    }
     r.endSection();
 }
 

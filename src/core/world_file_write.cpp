@@ -191,6 +191,9 @@ void writeStepState(ByteWriter& w, const World& world) {
     w.u64(sleep.stillFrames.empty() ? 0 : n);
     if (!sleep.stillFrames.empty())
         for (size_t p = 0; p < n; ++p) w.u16(p < sleep.stillFrames.size() ? sleep.stillFrames[p] : 0);
+    // Balls (ball_sleep.cpp): frames each has been still, and whether it sleeps.
+    w.u64(world.balls.size());
+    for (const Ball& b : world.balls) w.u16(b.stillFrames), w.u8(b.asleep ? 1 : 0);
     w.endSection();
 }
 

@@ -66,8 +66,6 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
     return bary = Vec3(0, 0, 1), c;
 }
 
-namespace {
-
 void integrateBall(Ball& ball, const CollisionSettings& s, const Vec3& gravity, float dt) {
     ball.v += gravity * dt;
     ball.x += ball.v * dt;
@@ -86,6 +84,8 @@ void integrateBall(Ball& ball, const CollisionSettings& s, const Vec3& gravity, 
         }
     }
 }
+
+namespace {
 
 // One contact between a ball and the point q = sum b_i x_i of a triangle; n points from the ball
 // centre to where the cloth must be, pen is how far q must move along n.
@@ -355,6 +355,7 @@ void collideBalls(Cloth& cloth, std::vector<Ball>& balls, const CollisionSetting
     std::vector<uint8_t> inside; // broad-phase scratch, shared by the balls
     for (uint32_t i = 0; i < balls.size(); ++i) {
         Ball& ball = balls[i];
+        if (ball.asleep) continue; // nothing within its reach moves (ball_sleep.cpp)
         const Vec3 c0 = ball.x;
         integrateBall(ball, s, gravity, dt);
         collideBall(cloth, ball, i, c0, s, dt, maxEdge, inside, packed, contacts);
@@ -368,6 +369,7 @@ void settleContacts(Cloth& cloth, std::vector<Ball>& balls, const CollisionSetti
     for (const BallContact& c : contacts)
         for (Index p : cloth.triangles[c.triangle].p) cloth.flags[p] &= uint8_t(~kTouched);
     for (uint32_t i = 0; i < balls.size() && clothHeld; ++i) {
+        if (balls[i].asleep) continue;
         for (size_t k = 0; k < contacts.size(); ++k)
             if (contacts[k].ball == i) contactOf[contacts[k].triangle] = int32_t(k);
         settleBall(cloth, balls[i], s, dt, maxEdge, inside, contacts, contactOf.data());

@@ -23,6 +23,10 @@ void collideBalls(Cloth& cloth, std::vector<Ball>& balls, const CollisionSetting
 void settleContacts(Cloth& cloth, std::vector<Ball>& balls, const CollisionSettings& settings, float dt, float maxEdge,
                     bool clothHeld, const std::vector<BallContact>& contacts, std::vector<int32_t>& contactOf);
 
+// One ball, one sub-step, with nothing but gravity and the ground (a little bounce, friction): what
+// the collide phase does to a ball before it meets the cloth.
+void integrateBall(Ball& ball, const CollisionSettings& settings, const Vec3& gravity, float dt);
+
 // Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5), with barycentric
 // weights of the result.
 Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, Vec3& bary);

@@ -8,8 +8,9 @@
 // particles then get kAsleep (cloth.h): inverse mass 0, like a pin, and velocity 0, so no phase
 // moves them and the limit and the guard treat them as fixed.
 // Waking, before a frame: sleep off; wind; any parameter changed since the last frame; a driver
-// on one of its particles (the drag tool grabbing it); a ball whose reach over the frame overlaps
-// the box of the sleeping particles; World::wake() (the knife, impulses, deleting a piece, tools).
+// on one of its particles (the drag tool grabbing it); an awake ball whose reach over the frame
+// overlaps the box of the sleeping particles; World::wake() (the knife, impulses, deleting a piece,
+// tools).
 // Every sleeping piece wakes at once: rare events, and no piece is left resting on one that moves.
 #include "sleep.h"
 
@@ -88,7 +89,7 @@ void updatePieceSleep(World& w, StepState& state) {
     }
     refreshLabels(c, S);
     if (S.labelCount < 2) return;
-    const int need = std::clamp(int(std::ceil(settings.sleep.delay / settings.time.frameDt - 1e-6)), 1, 0xffff);
+    const int need = stillFramesToSleep(settings);
     // Per piece (indexed by its label): held by a pin or a driver, awake particles, fewest still frames.
     std::vector<uint8_t> held(n, 0), awake(n, 0);
     std::vector<uint16_t> fewest(n, 0xffff);

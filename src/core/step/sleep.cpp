@@ -22,6 +22,7 @@ bool aBallCanReach(const World& w, const Vec3& lo, const Vec3& hi) {
     const Vec3 g(settings.gravity.x, settings.gravity.y, settings.gravity.z);
     const float T = settings.time.frameDt;
     for (const Ball& b : w.balls) {
+        if (b.asleep) continue; // nothing within its reach moves (ball_sleep.cpp)
         // Where the ball can be by the end of the frame (gravity included), grown by its radius.
         const float reach = b.radius + settings.collision.thickness + b.v.norm() * T + 0.5f * g.norm() * T * T;
         if (!((b.x.array() + reach < lo.array()).any() || (b.x.array() - reach > hi.array()).any())) return true;
@@ -39,6 +40,7 @@ void World::wake() {
     asleep = false;
     state_->sleep.restSince = -1;
     wakePieces(*this, *state_);
+    for (Ball& b : balls) b.asleep = false, b.stillFrames = 0;
 }
 
 bool stayAsleep(World& w, StepState& state) {

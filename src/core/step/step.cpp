@@ -36,6 +36,7 @@ bool ballNearCloth(const World& w) {
     }
     const float frame = w.settings.time.frameDt, spacing = float(meanRestLength(w.cloth));
     for (const Ball& b : w.balls) {
+        if (b.asleep) continue; // nothing within its reach moves (ball_sleep.cpp)
         const float reach = b.radius + spacing + (b.v.norm() + std::sqrt(fastest2)) * frame;
         const Vec3 nearest = b.x.cwiseMax(lo).cwiseMin(hi);
         if (!((b.x - nearest).norm() > reach)) return true; // a non-finite ball counts as near
@@ -119,12 +120,14 @@ void World::step() {
     applySettings();
     StepState& state = *state_;
     if (stayAsleep(*this, state)) {
+        moveBallsBesideASleepingCloth(*this, state); // none of them can reach it this frame
         time += settings.time.frameDt;
         ++steps;
         ++sleptFrames;
         return;
     }
     wakePiecesIfTouched(*this, state);
+    wakeBallsIfTouched(*this, state); // after the pieces: a piece woken under a ball wakes it
     if (settings.sleep.enabled) state.sleep.frameStart = cloth.x;
     // A ball near the cloth or a hand moving it: the guard's conservative step, springs capped one
     // by one (stability.cpp). Their tears are made in one sub-step (bench/README.md, "Ball outcomes
@@ -141,6 +144,7 @@ void World::step() {
     phaseBookkeeping(*this);
     ++steps;
     updatePieceSleep(*this, state); // first: the World's sleep then records the masses it leaves
+    updateBallSleep(*this, state);  // after the pieces: a ball sleeps once what it rests on does
     updateSleep(*this, state);
 }
 

@@ -41,8 +41,9 @@ StepContext makeStepContext(World& w, StepState& state, float dt) {
     c.threads = threadsFor(w.cloth.particleCount());
 
     c.windBlows = windBlows(S);
-    c.collide = !w.balls.empty();
-    c.contact = !w.balls.empty() || S.collision.ground;
+    const bool ballsAwake = std::any_of(w.balls.begin(), w.balls.end(), [](const Ball& b) { return !b.asleep; });
+    c.collide = ballsAwake;
+    c.contact = ballsAwake || S.collision.ground;
     c.limiting = S.limit.enabled && S.limit.iterations > 0;
     c.tearing = S.tear.enabled;
     c.scan = c.limiting || c.tearing; // the limit pass doubles as the strain scan

@@ -159,6 +159,10 @@ struct SleepState {
     // (saturating), and the parameters at the last frame (a change wakes the pieces).
     std::vector<uint16_t> stillFrames;
     Settings pieceSettings;
+    // Balls (ball_sleep.cpp): their positions at the start of the frame, and the parameters at the
+    // last frame (a change wakes a sleeping ball).
+    std::vector<Vec3> ballFrameStart;
+    Settings ballSettings;
     // Cache: the pieces as particle labels (pieces.h pieceLabels) for this topology revision.
     std::vector<Index> labels;
     uint64_t labelsTopology = 0;
