@@ -181,16 +181,50 @@ inline bool boxesOverlap(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
     return !((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any());
 }
 
-// The triangles whose box overlaps [lo, hi], once per ball and phase, in index order; the contact
-// passes then look at these only. Broad phase: every point of a triangle lies within its longest
+// The triangles near one ball for one phase (trianglesIn, ascending), with what the passes know of
+// each. The passes repeat over the same list, and what decides a triangle's contact is its corners'
+// positions and velocities and the ball's centre; so a triangle none of whose corners moved since
+// it was last looked at (`touched` marks the triangles of a corner that moved) gives the same
+// answer again: whether its box overlaps the ball's box (`box`), and, for the contact passes after
+// the first, that it pushes nothing (`quiet`). The passes skip those and do exactly what they did
+// when they looked at every triangle each time, a few times faster under a ball in the cloth (most
+// of the list lies outside the ball's box: the list covers the box grown by the radius).
+struct NearTriangles {
+    enum Box : uint8_t { kUnknown, kOutside, kOverlaps };
+    std::vector<Index> tri;
+    std::vector<uint8_t> box;   // Box, as of the corners' positions when tested
+    std::vector<uint8_t> quiet; // looked at by a contact pass (1+) since anything it reads changed
+
+    // Listed with the triangle: whether its box overlaps the ball's box (the corners are loaded then).
+    void add(Index t, bool overlaps) {
+        tri.push_back(t);
+        box.push_back(overlaps ? kOverlaps : kOutside);
+    }
+    // Particle p moved: its triangles must be looked at again.
+    void touched(const Cloth& cloth, Index p) {
+        for (Index t : cloth.particleTris[p]) {
+            const auto it = std::lower_bound(tri.begin(), tri.end(), t);
+            if (it == tri.end() || *it != t) continue;
+            const size_t k = size_t(it - tri.begin());
+            box[k] = kUnknown;
+            quiet[k] = 0;
+        }
+    }
+    // The ball's centre moved: every contact answer may change (the boxes tested are fixed).
+    void ballMoved() { std::fill(quiet.begin(), quiet.end(), uint8_t(0)); }
+};
+
+// The triangles whose box overlaps [lo, hi], once per ball and phase, in index order, each with
+// whether its box overlaps the ball's own box [ballLo, ballHi] (inside [lo, hi]); the contact passes
+// then look at these only. Broad phase: every point of a triangle lies within its longest
 // edge of each of its corners, so a triangle overlapping the box has all its corners in the box
 // grown by maxEdge (a bound on every edge this sub-step). One pass over the particle positions
 // marks those (`inside`, scratch); each triangle is then listed once, from its lowest marked
 // corner. Where more than an eighth of the cloth is marked, or without a bound (maxEdge infinite:
 // no limit and no tearing), every triangle's box is tested instead, which is then cheaper.
-std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, float maxEdge,
-                               std::vector<uint8_t>& inside) {
-    std::vector<Index> near;
+NearTriangles trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& hi, const Vec3& ballLo, const Vec3& ballHi,
+                          float maxEdge, std::vector<uint8_t>& inside) {
+    NearTriangles near;
     const size_t n = cloth.particleCount();
     size_t marked = n;
     if (std::isfinite(maxEdge)) {
@@ -203,40 +237,65 @@ std::vector<Index> trianglesIn(const Cloth& cloth, const Vec3& lo, const Vec3& h
             marked += inside[p];
         }
     }
+    auto consider = [&](Index ti) {
+        const Triangle& tri = cloth.triangles[ti];
+        const Vec3 &a = cloth.x[tri.p[0]], &b = cloth.x[tri.p[1]], &c = cloth.x[tri.p[2]];
+        if (boxesOverlap(a, b, c, lo, hi)) near.add(ti, boxesOverlap(a, b, c, ballLo, ballHi));
+    };
     if (8 * marked > n) {
-        for (Index ti = 0; ti < Index(cloth.triangles.size()); ++ti) {
-            const Triangle& tri = cloth.triangles[ti];
-            if (boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near.push_back(ti);
+        for (Index ti = 0; ti < Index(cloth.triangles.size()); ++ti) consider(ti);
+    } else {
+        for (Index p = 0; p < n; ++p) {
+            if (!inside[p]) continue;
+            for (Index ti : cloth.particleTris[p]) {
+                bool first = true;
+                for (Index q : cloth.triangles[ti].p) first &= !(q < p && inside[q]);
+                if (first) consider(ti);
+            }
         }
-        return near;
+        // The order of a full scan: results do not depend on the broad phase.
+        std::vector<size_t> order(near.tri.size());
+        for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+        std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return near.tri[i] < near.tri[j]; });
+        NearTriangles sorted;
+        for (size_t k : order) sorted.add(near.tri[k], near.box[k] == NearTriangles::kOverlaps);
+        near = std::move(sorted);
     }
-    for (Index p = 0; p < n; ++p) {
-        if (!inside[p]) continue;
-        for (Index ti : cloth.particleTris[p]) {
-            const Triangle& tri = cloth.triangles[ti];
-            bool first = true;
-            for (Index q : tri.p) first &= !(q < p && inside[q]);
-            if (first && boxesOverlap(cloth.x[tri.p[0]], cloth.x[tri.p[1]], cloth.x[tri.p[2]], lo, hi)) near.push_back(ti);
-        }
-    }
-    std::sort(near.begin(), near.end()); // the order of a full scan: results do not depend on the broad phase
+    near.quiet.assign(near.tri.size(), 0);
     return near;
 }
 
 // Visits the triangles of `near` whose box (now) overlaps [lo, hi] with their corners and unit normal.
+// With `contactPass` (1, 2, ...: the contact passes after the first one, 0), the triangles it visits
+// are marked quiet, and from the second contact pass on the quiet ones are not visited again.
 template <class F>
-void forTrianglesIn(const Cloth& cloth, const std::vector<Index>& near, const Vec3& lo, const Vec3& hi, F&& f) {
-    for (Index ti : near) {
+void forTrianglesIn(const Cloth& cloth, NearTriangles& near, const Vec3& lo, const Vec3& hi, int contactPass, F&& f) {
+    for (size_t k = 0; k < near.tri.size(); ++k) {
+        if (near.box[k] == NearTriangles::kOutside || (contactPass >= 2 && near.quiet[k])) continue;
+        const Index ti = near.tri[k];
         const Triangle& tri = cloth.triangles[ti];
         const Vec3& a = cloth.x[tri.p[0]];
         const Vec3& b = cloth.x[tri.p[1]];
         const Vec3& c = cloth.x[tri.p[2]];
-        if (!boxesOverlap(a, b, c, lo, hi)) continue;
+        if (near.box[k] == NearTriangles::kUnknown) {
+            near.box[k] = boxesOverlap(a, b, c, lo, hi) ? NearTriangles::kOverlaps : NearTriangles::kOutside;
+            if (near.box[k] == NearTriangles::kOutside) continue;
+        }
+        if (contactPass >= 1) near.quiet[k] = 1; // a push below moves its corners and clears it
         Vec3 nt = (b - a).cross(c - a);
         const float len = nt.norm();
         if (!(len > 0.f)) continue;
         f(ti, tri, a, b, c, Vec3(nt / len));
     }
+}
+
+// resolveContact, and the near list told what moved.
+void push(Cloth& cloth, NearTriangles& near, const Triangle& tri, const Vec3& bary, Ball& ball, const Vec3& n, float pen,
+          float friction) {
+    const Vec3 centre = ball.x;
+    resolveContact(cloth, tri, bary, ball, n, pen, friction);
+    for (Index p : tri.p) near.touched(cloth, p);
+    if (ball.x != centre) near.ballMoved();
 }
 
 // Collide phase, one ball (moved from c0 to ball.x this sub-step). The side a ball belongs on is
@@ -253,11 +312,11 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
     // nothing is left inside the ball: the contact phase must see only what the limit did.
     const size_t first = contacts.size();
     // Pushed triangles move away from the ball; a margin of R more covers those pushed into the box.
-    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R, maxEdge, inside);
+    NearTriangles near = trianglesIn(cloth, lo.array() - R, hi.array() + R, lo, hi, maxEdge, inside);
     for (int pass = 0; pass < 1 + kContactPasses; ++pass) {
         bool pushed = false;
-        forTrianglesIn(cloth, near, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
-                                          const Vec3& nt) {
+        forTrianglesIn(cloth, near, lo, hi, pass, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b,
+                                                     const Vec3& c, const Vec3& nt) {
             const Vec3 a0 = startOf(cloth, tri.p[0], dt);
             const Vec3 n0 = (startOf(cloth, tri.p[1], dt) - a0).cross(startOf(cloth, tri.p[2], dt) - a0);
             const float side = n0.dot(c0 - a0) >= 0.f ? 1.f : -1.f;
@@ -265,7 +324,7 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
             if (through != (pass == 0)) return;
             Touch t;
             if (!touch(ball.x, R, a, b, c, nt, side, t) || t.pen <= kContactSlop * R) return;
-            resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction);
+            push(cloth, near, tri, t.bary, ball, t.n, t.pen, s.friction);
             for (Index p : tri.p) {
                 PackedParticle& q = packed[p];
                 for (int k = 0; k < 3; ++k) q.x[k] = cloth.x[p][k], q.v[k] = cloth.v[p][k];
@@ -295,10 +354,10 @@ void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, 
     const float R = ball.radius + s.thickness;
     const Vec3 lo = ball.x.array() - R, hi = ball.x.array() + R;
     const float moveTol2 = sq(1e-5f * R);
-    const std::vector<Index> near = trianglesIn(cloth, lo.array() - R, hi.array() + R, maxEdge, inside);
+    NearTriangles near = trianglesIn(cloth, lo.array() - R, hi.array() + R, lo, hi, maxEdge, inside);
     for (int pass = 0; pass < 2; ++pass)
-        forTrianglesIn(cloth, near, lo, hi, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b, const Vec3& c,
-                                          const Vec3& nt) {
+        forTrianglesIn(cloth, near, lo, hi, 0, [&](Index ti, const Triangle& tri, const Vec3& a, const Vec3& b,
+                                                  const Vec3& c, const Vec3& nt) {
             const BallContact* contact = contactOf[ti] >= 0 ? &contacts[contactOf[ti]] : nullptr;
             const float now = nt.dot(ball.x - a) >= 0.f ? 1.f : -1.f;
             const float side = contact ? float(contact->side) : now;
@@ -310,7 +369,7 @@ void settleBall(Cloth& cloth, Ball& ball, const CollisionSettings& s, float dt, 
             if (contact)
                 for (int k = 0; k < 3; ++k) held |= (cloth.x[tri.p[k]] - contact->at[k]).squaredNorm() > moveTol2;
             if (!held || ball.mass <= 0.f) {
-                resolveContact(cloth, tri, t.bary, ball, t.n, t.pen, s.friction);
+                push(cloth, near, tri, t.bary, ball, t.n, t.pen, s.friction);
                 return;
             }
             // Moved back by pen, the ball loses pen / dt of its approach (position-based: the
