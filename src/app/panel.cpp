@@ -395,7 +395,14 @@ void drawStatsPane(AppState& st, const World& world) {
     const double ke = world.kineticEnergy(), pe = world.potentialEnergy();
     ImGui::Text("energy: kinetic %.3g J, potential %.3g J", ke, pe);
     ImGui::Text("max strain %.3f (tears at %.2f)", world.maxStrain, world.settings.tear.threshold);
-    ImGui::Text("balls %zu   t = %.2f s", world.balls.size(), world.time);
+    size_t ballsAsleep = 0;
+    for (const Ball& b : world.balls) ballsAsleep += b.asleep;
+    if (ballsAsleep > 0) {
+        ImGui::Text("balls %zu, %zu asleep   t = %.2f s", world.balls.size(), ballsAsleep, world.time);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Asleep: at rest with no moving cloth within reach, not simulated until touched");
+    } else {
+        ImGui::Text("balls %zu   t = %.2f s", world.balls.size(), world.time);
+    }
     if (!world.finite) ImGui::TextColored(ImVec4(1.f, 0.3f, 0.3f, 1.f), "NON-FINITE: %s", world.nonFiniteWhere.c_str());
     ImGui::TextDisabled("F1: help");
     ImGui::End();
