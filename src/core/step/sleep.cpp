@@ -3,9 +3,11 @@
 // Falling asleep: after a frame in which every particle moved slower than sleep.speed, continuously
 // for sleep.delay seconds, with nothing that moves it by itself (no drivers, no wind). Waking: a
 // ball whose reach over the next frame (radius, thickness, the distance it travels) overlaps the
-// box the cloth had when it fell asleep; a driver; wind; any change of a parameter, of the topology
-// or of the pinned particles; World::wake() (impulses and the app's tools call it). Asleep, a frame only
-// advances the clock: the state stays exactly as it was, so waking continues from there.
+// box the cloth had when it fell asleep (a sleeping ball cannot: ball_sleep.cpp); a driver; wind;
+// any change of a parameter, of the topology or of the pinned particles; World::wake() (impulses
+// and the app's tools call it). Asleep, a frame advances the clock and moves only the awake balls,
+// none of which can reach the cloth that frame (they fly and bounce on the ground): the cloth stays
+// exactly as it was, so waking continues from there.
 #include "sleep.h"
 
 #include "clothtear/params.h"
