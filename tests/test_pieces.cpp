@@ -75,6 +75,14 @@ TEST(Pieces, ThreeDisjointPartsAreThreePiecesLargestFirst) {
     }
     EXPECT_NEAR(areaSum, c.totalRestArea(), 1e-9);
     EXPECT_NEAR(massSum, c.totalMass(), 1e-6);
+    // The same areas by label (pieceLabels): every particle's label carries its piece's area.
+    const std::vector<Index> label = pieceLabels(c);
+    double total = 0;
+    const std::vector<double> byLabel = restAreaByLabel(c, label, total);
+    EXPECT_NEAR(total, c.totalRestArea(), 1e-9);
+    EXPECT_NEAR(byLabel[label[0]], 0.25, 1e-9);   // the 3 x 3 grid, listed first
+    EXPECT_NEAR(byLabel[label[9]], 1.0, 1e-9);    // the 5 x 5 grid
+    EXPECT_NEAR(byLabel[label[34]], 0.005, 1e-9); // the single triangle
 }
 
 // The torn cloth exported (clothMesh + saveObj, what --export-obj and the panel write) and read back

@@ -21,6 +21,10 @@ struct Piece {
 // particle no triangle uses.
 std::vector<Index> pieceLabels(const Cloth& cloth);
 
+// The rest area of each piece (m^2), indexed by its label (pieceLabels: a particle index; 0 where no
+// piece has that label), and the whole cloth's rest area in `total`.
+std::vector<double> restAreaByLabel(const Cloth& cloth, const std::vector<Index>& label, double& total);
+
 // The pieces of `cloth`, largest rest area first (ties: fewer triangles first, then the order in
 // which their first triangles appear). An untorn cloth is one piece with its whole rest area.
 std::vector<Piece> findPieces(const Cloth& cloth);

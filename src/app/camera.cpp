@@ -125,12 +125,8 @@ void frameWorld(OrbitCamera& camera, const World& world) {
     // half as far again (the default throw at 64 a side: 29 scraps of 1-57 triangles, 0.003-0.7 %).
     constexpr double kFramedShare = 0.05, kScrapShare = 0.01;
     const std::vector<Index> label = pieceLabels(c);
-    std::vector<double> area(c.particleCount(), 0.0);
     double total = 0;
-    for (const Triangle& t : c.triangles) {
-        if (label[t.p[0]] != kNone) area[label[t.p[0]]] += t.restArea;
-        total += t.restArea;
-    }
+    const std::vector<double> area = restAreaByLabel(c, label, total);
     Vec3 lo = Vec3::Constant(1e30f), hi = Vec3::Constant(-1e30f);
     for (Index p = 0; p < c.particleCount(); ++p) {
         const Vec3& x = c.x[p];

@@ -38,6 +38,16 @@ std::vector<Index> pieceLabels(const Cloth& cloth) {
     return label;
 }
 
+std::vector<double> restAreaByLabel(const Cloth& cloth, const std::vector<Index>& label, double& total) {
+    std::vector<double> area(cloth.particleCount(), 0.0);
+    total = 0;
+    for (const Triangle& t : cloth.triangles) {
+        if (label[t.p[0]] != kNone) area[label[t.p[0]]] += t.restArea;
+        total += t.restArea;
+    }
+    return area;
+}
+
 std::vector<Piece> findPieces(const Cloth& cloth) {
     const size_t n = cloth.particleCount();
     std::vector<Index> parent = unionOfTriangles(cloth);

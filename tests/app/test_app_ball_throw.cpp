@@ -69,14 +69,10 @@ Flight throwFromStartCamera(const std::string& scene, std::vector<std::string> s
     // The pieces (connected islands): rest area and mean position.
     const std::vector<Index> label = pieceLabels(w.cloth);
     const size_t n = w.cloth.particleCount();
-    std::vector<double> area(n, 0.0);
+    double total = 0;
+    const std::vector<double> area = restAreaByLabel(w.cloth, label, total);
     std::vector<Vec3> sum(n, Vec3::Zero());
     std::vector<int> count(n, 0);
-    double total = 0;
-    for (const Triangle& t : w.cloth.triangles) {
-        if (label[t.p[0]] != kNone) area[label[t.p[0]]] += t.restArea;
-        total += t.restArea;
-    }
     for (Index p = 0; p < n; ++p)
         if (label[p] != kNone) sum[label[p]] += w.cloth.x[p], ++count[label[p]];
     Index main = 0;
