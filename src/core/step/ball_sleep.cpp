@@ -48,7 +48,17 @@ bool quiet(const World& w) { return w.settings.sleep.enabled && w.drivers.empty(
 
 float reachOf(const World& w) { return w.settings.collision.thickness + float(meanRestLength(w.cloth)); }
 
+// Where each ball starts the frame (updateBallSleep measures its move from there).
+void recordBallStarts(const World& w, SleepState& S) {
+    S.ballFrameStart.resize(w.balls.size());
+    for (size_t i = 0; i < w.balls.size(); ++i) S.ballFrameStart[i] = w.balls[i].x;
+}
+
 } // namespace
+
+bool anyBallAwake(const std::vector<Ball>& balls) {
+    return std::any_of(balls.begin(), balls.end(), [](const Ball& b) { return !b.asleep; });
+}
 
 int stillFramesToSleep(const Settings& s) {
     return std::clamp(int(std::ceil(s.sleep.delay / s.time.frameDt - 1e-6)), 1, 0xffff);
@@ -56,8 +66,7 @@ int stillFramesToSleep(const Settings& s) {
 
 void wakeBallsIfTouched(World& w, StepState& state) {
     SleepState& S = state.sleep;
-    S.ballFrameStart.resize(w.balls.size());
-    for (size_t i = 0; i < w.balls.size(); ++i) S.ballFrameStart[i] = w.balls[i].x;
+    recordBallStarts(w, S);
     if (std::any_of(w.balls.begin(), w.balls.end(), [](const Ball& b) { return b.asleep; })) {
         const bool touched = !quiet(w) || paramsChanged(w.settings, S.ballSettings);
         float fastest2 = 0.f;
@@ -74,10 +83,8 @@ void wakeBallsIfTouched(World& w, StepState& state) {
 }
 
 void moveBallsBesideASleepingCloth(World& w, StepState& state) {
-    if (std::none_of(w.balls.begin(), w.balls.end(), [](const Ball& b) { return !b.asleep; })) return;
-    SleepState& S = state.sleep;
-    S.ballFrameStart.resize(w.balls.size());
-    for (size_t i = 0; i < w.balls.size(); ++i) S.ballFrameStart[i] = w.balls[i].x;
+    if (!anyBallAwake(w.balls)) return;
+    recordBallStarts(w, state.sleep);
     const Settings& s = w.settings;
     const int substeps = std::max({1, s.time.substeps, w.frameSubsteps});
     const float dt = s.time.frameDt / float(substeps);

@@ -31,6 +31,8 @@ void updateBallSleep(World& world, StepState& state);
 // A frame in which the World sleeps: its awake balls, none of which can reach the cloth (or the
 // World would have woken), fly and bounce on the ground as in a frame of the step, and may sleep.
 void moveBallsBesideASleepingCloth(World& world, StepState& state);
+// Is any ball awake (the ball phases have work)?
+bool anyBallAwake(const std::vector<Ball>& balls);
 // Frames a ball or a piece must stay still before it sleeps (sleep.delay in frames, at least 1).
 int stillFramesToSleep(const Settings& settings);
 

@@ -2,6 +2,7 @@
 #include "step_context.h"
 
 #include "parallel.h"
+#include "sleep.h"
 #include "step_state.h"
 
 #include <algorithm>
@@ -41,7 +42,7 @@ StepContext makeStepContext(World& w, StepState& state, float dt) {
     c.threads = threadsFor(w.cloth.particleCount());
 
     c.windBlows = windBlows(S);
-    const bool ballsAwake = std::any_of(w.balls.begin(), w.balls.end(), [](const Ball& b) { return !b.asleep; });
+    const bool ballsAwake = anyBallAwake(w.balls);
     c.collide = ballsAwake;
     c.contact = ballsAwake || S.collision.ground;
     c.limiting = S.limit.enabled && S.limit.iterations > 0;
