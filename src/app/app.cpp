@@ -500,6 +500,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"topology_uploads", renderer_.topologyUploads()},
         {"torn_edges", renderer_.tornEdges()}, // drawn with loose threads (render_mesh.h findTornEdges)
         {"cloth_triangles_drawn", renderer_.clothTriangles()}, // last frame; fewer from far (render_lod.h)
+        {"stats_pane_overflow_px", state_.stats.statsOverflowPx}, // the stats pane's widest row past its edge
         {"dynamic_uploads", renderer_.dynamicUploads()}, // frames whose positions and normals were uploaded
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},

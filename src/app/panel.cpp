@@ -15,6 +15,7 @@
 #include "clothtear/scenes.h"
 
 #include <imgui.h>
+#include <imgui_internal.h> // ImGuiWindow::DC.CursorMaxPos: the stats pane's widest row
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -300,6 +301,20 @@ void piecesList(AppState& st, const std::vector<Piece>& pieces) {
     ImGui::TreePop();
 }
 
+template <class... Args> std::string formatRow(const char* format, Args... args) {
+    char row[160];
+    std::snprintf(row, sizeof row, format, args...);
+    return row;
+}
+
+// A row of the fixed-width stats pane: `full`, or `compact` where `full` would run past the pane's
+// edge (large counts), with `tooltip` (if any) saying what the compact one's figures are.
+void fittedText(const std::string& full, const std::string& compact, const char* tooltip) {
+    const bool fits = ImGui::CalcTextSize(full.c_str()).x <= ImGui::GetContentRegionAvail().x;
+    ImGui::TextUnformatted(fits ? full.c_str() : compact.c_str());
+    if (!fits && *tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+}
+
 } // namespace
 
 void drawStatsPane(AppState& st, const World& world) {
@@ -314,7 +329,7 @@ void drawStatsPane(AppState& st, const World& world) {
     const Stats& s = st.stats;
     const Cloth& c = world.cloth;
     if (s.fps > 0) ImGui::Text("FPS %.1f   sim %.1f frames/s", s.fps, s.simFps);
-    else ImGui::TextDisabled("FPS --   (timings come every half second)"); // not "FPS 0.0" at start
+    else ImGui::TextDisabled("FPS --   (timed every half second)"); // not "FPS 0.0" at start
     if (st.paused) ImGui::TextColored(ImVec4(1.f, 0.85f, 0.3f, 1.f), "paused");
     else if (st.clock.slowedDown)
         ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "slower than real time (%.0f%%)",
@@ -376,7 +391,8 @@ void drawStatsPane(AppState& st, const World& world) {
     ImGui::Separator();
     size_t pinned = 0, weak = 0;
     for (uint8_t f : c.flags) pinned += (f & kPinned) != 0, weak += (f & kWeak) != 0;
-    ImGui::Text("particles %zu (pinned %zu, weak %zu)", c.particleCount(), pinned, weak);
+    fittedText(formatRow("particles %zu (pinned %zu, weak %zu)", c.particleCount(), pinned, weak),
+               formatRow("particles %zu (%zu pinned, %zu weak)", c.particleCount(), pinned, weak), "");
     ImGui::Text("springs %zu + bend-shear %zu", c.springs.size(), c.bends.size());
     if (s.clothTrianglesDrawn > 0 && s.clothTrianglesDrawn < c.triangles.size())
         ImGui::Text("triangles %zu (%zu drawn)", c.triangles.size(), s.clothTrianglesDrawn);
@@ -386,14 +402,19 @@ void drawStatsPane(AppState& st, const World& world) {
         ImGui::SetTooltip("From far, where a grid cell spans under 3 pixels, every intact block of 2 x 2 cells\n"
                           "is drawn as two triangles (torn blocks as they are): the same image at about\n"
                           "a quarter of the triangles. Zoom in to draw every triangle.");
-    ImGui::Text("tears: basic %llu  weak %llu  one-point %llu", (unsigned long long)world.tearLog.counts[0],
-                (unsigned long long)world.tearLog.counts[1], (unsigned long long)world.tearLog.counts[2]);
+    const auto basic = (unsigned long long)world.tearLog.counts[0], weakTears = (unsigned long long)world.tearLog.counts[1],
+               onePoint = (unsigned long long)world.tearLog.counts[2];
+    fittedText(formatRow("tears: basic %llu  weak %llu  one-point %llu", basic, weakTears, onePoint),
+               formatRow("tears: %llu / %llu / %llu", basic, weakTears, onePoint),
+               "Tears by mode (Onal 3.2): basic / weak point / one-point connection");
     PiecesSummary& ps = st.pieces;
     if (ps.topology != c.topologyRevision || ps.mass != c.massRevision)
         ps = {c.topologyRevision, c.massRevision, findPieces(c)};
     piecesList(st, ps.list);
     const double ke = world.kineticEnergy(), pe = world.potentialEnergy();
-    ImGui::Text("energy: kinetic %.3g J, potential %.3g J", ke, pe);
+    // Two rows: on one, a small kinetic energy ("0.000618") and a potential one ran past the pane.
+    ImGui::Text("energy: kinetic %.3g J", ke);
+    ImGui::Text("        potential %.3g J", pe);
     ImGui::Text("max strain %.3f (tears at %.2f)", world.maxStrain, world.settings.tear.threshold);
     size_t ballsAsleep = 0;
     for (const Ball& b : world.balls) ballsAsleep += b.asleep;
@@ -403,8 +424,16 @@ void drawStatsPane(AppState& st, const World& world) {
     } else {
         ImGui::Text("balls %zu   t = %.2f s", world.balls.size(), world.time);
     }
-    if (!world.finite) ImGui::TextColored(ImVec4(1.f, 0.3f, 0.3f, 1.f), "NON-FINITE: %s", world.nonFiniteWhere.c_str());
+    if (!world.finite) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.3f, 0.3f, 1.f));
+        ImGui::TextWrapped("NON-FINITE: %s", world.nonFiniteWhere.c_str()); // a phase's name and where: may be long
+        ImGui::PopStyleColor();
+    }
     ImGui::TextDisabled("F1: help");
+    // The widest row drawn against the pane's inner edge (imgui_internal.h: CursorMaxPos grows with
+    // every item, text included, whether or not the pane clips it).
+    const ImGuiWindow* pane = ImGui::GetCurrentWindow();
+    st.stats.statsOverflowPx = std::max(st.stats.statsOverflowPx, pane->DC.CursorMaxPos.x - pane->WorkRect.Max.x);
     ImGui::End();
 }
 

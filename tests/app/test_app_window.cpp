@@ -170,6 +170,20 @@ TEST(AppWindow, ReplayedBallThrowHitsTheCloth) {
     EXPECT_EQ(report["app"]["balls_hit_cloth"].get<int>(), 1) << r.output;
 }
 
+// Issue 13 goal 6: the stats pane's rows fit its fixed width over a run that tears (tears by mode,
+// pieces, energies) from its first frame ("FPS --" before the first timing). Before: the placeholder
+// ran 4 px past the pane's edge, and the energy row, one row then, 46 px in this run (cut off).
+TEST(AppWindow, StatsPaneRowsFitItsWidth) {
+    REQUIRE_XVFB();
+    const fs::path json = tempDir() / "stats_pane.json";
+    AppRun r = runApp("--scene curtain --set cloth.resolution_x=64 --set cloth.resolution_y=64 --set ball.speed=7 "
+                      "--script '" + data("ball_throw.txt") + "' --json '" + json.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto report = readJson(json);
+    ASSERT_GT(report["tears_total"].get<int>(), 0) << "the throw must tear for the rows to fill";
+    EXPECT_LE(report["app"]["stats_pane_overflow_px"].get<double>(), 0.0);
+}
+
 TEST(AppWindow, ReplayedPanelClickChangesAParameter) {
     REQUIRE_XVFB();
     const fs::path json = tempDir() / "panel.json";
