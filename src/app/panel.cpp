@@ -273,6 +273,17 @@ namespace {
 
 // The torn pieces: how many and the smallest; opened, each with its area, mass and a Delete button
 // (the main loop takes the piece out; Ctrl+Z brings it back).
+template <class... Args> std::string formatRow(const char* format, Args... args) {
+    char row[160];
+    std::snprintf(row, sizeof row, format, args...);
+    return row;
+}
+
+// Whether `text`, after `lead` px of widget (a tree node's arrow), fits the rest of the pane's row.
+bool fitsRow(const std::string& text, float lead = 0.f) {
+    return lead + ImGui::CalcTextSize(text.c_str()).x <= ImGui::GetContentRegionAvail().x;
+}
+
 void piecesList(AppState& st, const std::vector<Piece>& pieces) {
     if (pieces.size() <= 1) {
         ImGui::Text("pieces %zu", pieces.size());
@@ -280,10 +291,13 @@ void piecesList(AppState& st, const std::vector<Piece>& pieces) {
     }
     size_t asleep = 0;
     for (const Piece& p : pieces) asleep += p.asleep;
-    const bool open = asleep > 0 ? ImGui::TreeNode("pieces", "pieces %zu, %zu asleep (smallest %.3g m^2)", pieces.size(),
-                                                   asleep, pieces.back().restArea)
-                                 : ImGui::TreeNode("pieces", "pieces %zu (smallest %.3g m^2)", pieces.size(),
-                                                   pieces.back().restArea);
+    // The smallest piece's area leaves the header (for a tooltip) where the header would not fit.
+    const std::string counts = asleep > 0 ? formatRow("pieces %zu, %zu asleep", pieces.size(), asleep)
+                                          : formatRow("pieces %zu", pieces.size());
+    const std::string full = counts + formatRow(" (smallest %.3g m^2)", pieces.back().restArea);
+    const bool headerFits = fitsRow(full, ImGui::GetTreeNodeToLabelSpacing());
+    const bool open = ImGui::TreeNode("pieces", "%s", headerFits ? full.c_str() : counts.c_str());
+    if (!headerFits && ImGui::IsItemHovered()) ImGui::SetTooltip("smallest %.3g m^2", pieces.back().restArea);
     if (!open) return;
     constexpr size_t kShown = 12;
     for (size_t k = 0; k < pieces.size() && k < kShown; ++k) {
@@ -291,26 +305,29 @@ void piecesList(AppState& st, const std::vector<Piece>& pieces) {
         ImGui::PushID(int(k));
         if (ImGui::SmallButton("Delete")) st.requestDeletePiece = int64_t(p.firstTriangle);
         ImGui::SameLine();
+        // Area, mass and triangles; the mass to a tooltip where the row would not fit (a small
+        // piece's "4.29e-05 m^2  0.00858 g" ran past the pane).
+        const std::string row = formatRow("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
+        const bool fits = fitsRow(row);
+        const std::string shown = fits ? row : formatRow("%.3g m^2  %zu tri.", p.restArea, p.triangles);
         // A sleeping piece (settled, not simulated until touched: piece_sleep.cpp) is greyed.
-        if (p.asleep) ImGui::TextDisabled("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
-        else ImGui::Text("%.3g m^2  %.3g g  %zu tri.", p.restArea, 1000.0 * p.mass, p.triangles);
-        if (p.asleep && ImGui::IsItemHovered()) ImGui::SetTooltip("Asleep: it settled and is not simulated until touched");
+        if (p.asleep) ImGui::TextDisabled("%s", shown.c_str());
+        else ImGui::TextUnformatted(shown.c_str());
+        if (ImGui::IsItemHovered() && (p.asleep || !fits)) {
+            std::string tip = fits ? "" : formatRow("%.3g g", 1000.0 * p.mass);
+            if (p.asleep) tip += (tip.empty() ? "" : "\n") + std::string("Asleep: it settled and is not simulated until touched");
+            ImGui::SetTooltip("%s", tip.c_str());
+        }
         ImGui::PopID();
     }
     if (pieces.size() > kShown) ImGui::TextDisabled("... %zu smaller", pieces.size() - kShown);
     ImGui::TreePop();
 }
 
-template <class... Args> std::string formatRow(const char* format, Args... args) {
-    char row[160];
-    std::snprintf(row, sizeof row, format, args...);
-    return row;
-}
-
 // A row of the fixed-width stats pane: `full`, or `compact` where `full` would run past the pane's
 // edge (large counts), with `tooltip` (if any) saying what the compact one's figures are.
 void fittedText(const std::string& full, const std::string& compact, const char* tooltip) {
-    const bool fits = ImGui::CalcTextSize(full.c_str()).x <= ImGui::GetContentRegionAvail().x;
+    const bool fits = fitsRow(full);
     ImGui::TextUnformatted(fits ? full.c_str() : compact.c_str());
     if (!fits && *tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
 }

@@ -182,6 +182,15 @@ TEST(AppWindow, StatsPaneRowsFitItsWidth) {
     const auto report = readJson(json);
     ASSERT_GT(report["tears_total"].get<int>(), 0) << "the throw must tear for the rows to fill";
     EXPECT_LE(report["app"]["stats_pane_overflow_px"].get<double>(), 0.0);
+    // The pieces list opened on a cut cloth with a scrap of two triangles (the README's delete.txt):
+    // its row, "4.29e-05 m^2  0.00858 g  2 tri.", ran 12 px past the pane before.
+    const fs::path pieces = tempDir() / "stats_pane_pieces.json";
+    r = runApp("--scene corners --script '" + std::string(CLOTHTEAR_SCREENSHOT_SCRIPTS) + "/delete.txt' --json '" +
+               pieces.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto cut = readJson(pieces);
+    ASSERT_GE(cut["pieces"]["count"].get<int>(), 2) << "the knife must leave pieces for the list to show";
+    EXPECT_LE(cut["app"]["stats_pane_overflow_px"].get<double>(), 0.0);
 }
 
 TEST(AppWindow, ReplayedPanelClickChangesAParameter) {
