@@ -271,8 +271,7 @@ void drawControlPanel(AppState& st, World& world) {
 
 namespace {
 
-// The torn pieces: how many and the smallest; opened, each with its area, mass and a Delete button
-// (the main loop takes the piece out; Ctrl+Z brings it back).
+// printf into a std::string (a row of the stats pane, up to 159 characters).
 template <class... Args> std::string formatRow(const char* format, Args... args) {
     char row[160];
     std::snprintf(row, sizeof row, format, args...);
@@ -284,6 +283,8 @@ bool fitsRow(const std::string& text, float lead = 0.f) {
     return lead + ImGui::CalcTextSize(text.c_str()).x <= ImGui::GetContentRegionAvail().x;
 }
 
+// The torn pieces: how many and the smallest; opened, each with its area, mass and a Delete button
+// (the main loop takes the piece out; Ctrl+Z brings it back).
 void piecesList(AppState& st, const std::vector<Piece>& pieces) {
     if (pieces.size() <= 1) {
         ImGui::Text("pieces %zu", pieces.size());
