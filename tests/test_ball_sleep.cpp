@@ -1,6 +1,7 @@
 // Sleep of balls (src/core/step/ball_sleep.cpp): a ball at rest with no moving cloth within its
 // reach sleeps; the ball phases skip it and the cloth takes the step it takes without a ball; it
 // wakes when something within its reach moves.
+#include "curtain_world.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/world_file.h"
@@ -11,16 +12,9 @@
 #include <vector>
 
 using namespace clothtear;
+using clothtear::test::curtainWorld;
 
 namespace {
-
-World curtain(int n) {
-    World w;
-    const std::string r = std::to_string(n);
-    const std::vector<std::string> sets{"cloth.resolution_x=" + r, "cloth.resolution_y=" + r};
-    EXPECT_EQ(loadScene(w, "curtain", sets), "");
-    return w;
-}
 
 size_t asleepParticles(const World& w) {
     size_t count = 0;
@@ -37,7 +31,7 @@ struct BallByPiece {
     Vec3 stripLo, stripHi;
 };
 BallByPiece ballBesideASleepingPiece(int n) {
-    BallByPiece s{curtain(n), Vec3::Constant(1e30f), Vec3::Constant(-1e30f)};
+    BallByPiece s{curtainWorld(n), Vec3::Constant(1e30f), Vec3::Constant(-1e30f)};
     World& w = s.world;
     w.step();
     EXPECT_GT(w.cut({Vec2d(-1.2, -0.4), Vec2d(1.2, -0.4)}).particlesAdded, 0u);
@@ -147,7 +141,7 @@ TEST(BallSleep, ASleepingBallWakesWhenTheClothBesideItMovesOrItIsPushed) {
 // While the World sleeps, a ball that cannot reach the cloth still falls and bounces on the ground
 // (it hung where it was), and then sleeps itself.
 TEST(BallSleep, ABallBesideASleepingWorldFallsToTheGroundAndSleeps) {
-    World w = curtain(16);
+    World w = curtainWorld(16);
     for (int f = 0; f < 900 && !w.asleep; ++f) w.step();
     ASSERT_TRUE(w.asleep);
     Ball b;

@@ -4,6 +4,7 @@
 #include "rewind.h"
 
 #include "clothtear/pieces.h"
+#include "../curtain_world.h"
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/tear.h"
@@ -11,17 +12,10 @@
 #include <gtest/gtest.h>
 
 using namespace clothtear;
+using clothtear::test::curtainWorld;
 using namespace clothtear::app;
 
 namespace {
-
-World curtain(int res) {
-    World w;
-    const std::string r = std::to_string(res);
-    const std::vector<std::string> sets{"cloth.resolution_x=" + r, "cloth.resolution_y=" + r};
-    EXPECT_EQ(loadScene(w, "curtain", sets), "");
-    return w;
-}
 
 // A heavy ball thrown at the curtain's middle: it tears through.
 Ball throughTheMiddle() {
@@ -37,7 +31,7 @@ Ball throughTheMiddle() {
 
 TEST(AppRewind, UndoingABallTakesBackTheThrowAndItsHolesExactlyAndRedoGivesThemBack) {
     for (int res : {20, 40}) {
-        World w = curtain(res);
+        World w = curtainWorld(res);
         Rewind rewind;
         rewind.restart(w);
         for (int f = 0; f < 10; ++f) w.step(), rewind.afterStep(w);
@@ -73,7 +67,7 @@ TEST(AppRewind, UndoingABallTakesBackTheThrowAndItsHolesExactlyAndRedoGivesThemB
 
 // Two gestures, two groups: the second undo goes back before the first throw.
 TEST(AppRewind, EachGestureIsItsOwnGroup) {
-    World w = curtain(24);
+    World w = curtainWorld(24);
     Rewind rewind;
     rewind.restart(w);
     const uint64_t start = stateHash(w);
@@ -131,7 +125,7 @@ TEST(AppRewind, TearsWithoutAGestureUndoToTheFrameBeforeTheFirst) {
 // The timeline: view a frame of the past, step on from it: the frames after it are dropped and the
 // world goes on as it did (no gesture in between, so the same future).
 TEST(AppRewind, TheTimelineResumesFromAFrameOfThePast) {
-    World w = curtain(20);
+    World w = curtainWorld(20);
     w.applyImpulse(Vec3(0, 0, 0), 10.f, Vec3(0, 0, 1), 2.f);
     Rewind rewind;
     rewind.restart(w);
@@ -152,7 +146,7 @@ TEST(AppRewind, TheTimelineResumesFromAFrameOfThePast) {
 }
 
 TEST(AppRewind, NothingToUndoOrRedoSaysNothingAndChangesNothing) {
-    World w = curtain(10);
+    World w = curtainWorld(10);
     Rewind rewind;
     rewind.restart(w);
     for (int f = 0; f < 5; ++f) w.step(), rewind.afterStep(w);
@@ -165,7 +159,7 @@ TEST(AppRewind, NothingToUndoOrRedoSaysNothingAndChangesNothing) {
 // A piece deleted from the stats pane (World::deletePiece) comes back whole with Ctrl+Z, as the
 // app does it: beforeEdit, then the deletion.
 TEST(AppRewind, ADeletedPieceComesBackWithUndo) {
-    World w = curtain(24);
+    World w = curtainWorld(24);
     Rewind rewind;
     rewind.restart(w);
     rewind.gestureStarted(w, false);
