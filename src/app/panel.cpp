@@ -410,7 +410,8 @@ void drawStatsPane(AppState& st, const World& world) {
     size_t pinned = 0, weak = 0;
     for (uint8_t f : c.flags) pinned += (f & kPinned) != 0, weak += (f & kWeak) != 0;
     fittedText(formatRow("particles %zu (pinned %zu, weak %zu)", c.particleCount(), pinned, weak),
-               formatRow("particles %zu (%zu pinned, %zu weak)", c.particleCount(), pinned, weak), "");
+               formatRow("particles %zu (%zu / %zu)", c.particleCount(), pinned, weak),
+               "particles (pinned / weak: a tear's tip)");
     ImGui::Text("springs %zu + bend-shear %zu", c.springs.size(), c.bends.size());
     if (s.clothTrianglesDrawn > 0 && s.clothTrianglesDrawn < c.triangles.size())
         ImGui::Text("triangles %zu (%zu drawn)", c.triangles.size(), s.clothTrianglesDrawn);
