@@ -115,3 +115,78 @@ TEST(SpringGroups, SseAndAvxKernelsGiveTheSameBits) {
 }
 
 } // namespace clothtear
+
+namespace clothtear {
+namespace {
+
+// CLOTHTEAR_MERGE_SPRINGS for the worlds stepped while it lives (read when the spring cache is built).
+class MergeScope {
+public:
+    explicit MergeScope(bool merge) {
+        if (!merge) setenv("CLOTHTEAR_MERGE_SPRINGS", "0", 1);
+    }
+    ~MergeScope() { unsetenv("CLOTHTEAR_MERGE_SPRINGS"); }
+    MergeScope(const MergeScope&) = delete;
+    MergeScope& operator=(const MergeScope&) = delete;
+};
+
+} // namespace
+
+// Bend-shear springs with the same ends and rest length share one entry of the spring cache, their
+// stiffness and damping summed (springs.cpp). One sub-step with only the springs, gravity and air
+// acting, with and without the merge: the same velocities up to rounding, relative to the sub-step's
+// largest velocity change from the bend-shear springs alone (a copy left out, or counted twice,
+// changes a velocity by its force, about as much as that). On the grid of n x n particles every
+// quad's diagonal and both its neighbours across it make a bend-shear spring twice: (n - 2)^2 of
+// them are merged. On the torn pull sheet (new particles and springs past the grid's) and on the
+// irregular mesh, whose twins can differ in weight, the same.
+TEST(SpringGroups, MergedBendShearTwinsGiveTheForcesOfBoth) {
+    struct Case {
+        const char* what;
+        std::string bytes;
+        long gridSide; // 0: not a whole grid
+    };
+    auto bytesOf = [](const char* scene, std::vector<std::string> sets) {
+        World w;
+        EXPECT_EQ(loadScene(w, scene, sets), "");
+        for (int f = 0; f < 20; ++f) w.step(); // swinging in the wind: the bend-shear springs bent
+        std::string bytes;
+        EXPECT_EQ(serializeWorld(w, bytes), "");
+        return bytes;
+    };
+    const Case cases[] = {
+        {"curtain 24", bytesOf("curtain", {"cloth.resolution_x=24", "cloth.resolution_y=24", "wind.enabled=1"}), 24},
+        {"irregular 20", bytesOf("irregular", {"cloth.resolution_x=20", "cloth.resolution_y=20", "wind.enabled=1"}), 0},
+        {"torn pull 40", tornPullBytes(), 0},
+    };
+    for (const Case& c : cases) {
+        auto oneSubStep = [&](bool merge, float bendScale) {
+            MergeScope scope(merge);
+            World w = loaded(c.bytes);
+            w.settings.limit.enabled = false;
+            w.settings.tear.enabled = false;
+            w.settings.material.bendStiffness *= bendScale;
+            w.settings.material.bendDamping *= bendScale;
+            w.substep();
+            return w;
+        };
+        const World separate = oneSubStep(false, 1.f), merged = oneSubStep(true, 1.f);
+        const World withoutBends = oneSubStep(false, 0.f);
+        EXPECT_EQ(separate.profile.mergedSprings, 0u) << c.what;
+        if (c.gridSide) {
+            EXPECT_EQ(long(merged.profile.mergedSprings), (c.gridSide - 2) * (c.gridSide - 2)) << c.what;
+        } else {
+            EXPECT_GT(merged.profile.mergedSprings, 0u) << c.what;
+        }
+        float bendChange = 0.f, worst = 0.f;
+        for (size_t p = 0; p < separate.cloth.particleCount(); ++p) {
+            bendChange = std::max(bendChange, (separate.cloth.v[p] - withoutBends.cloth.v[p]).norm());
+            worst = std::max(worst, (merged.cloth.v[p] - separate.cloth.v[p]).norm());
+        }
+        ASSERT_GT(bendChange, 0.f) << c.what;
+        EXPECT_LT(worst, 1e-3f * bendChange) << c.what << ": the bend-shear springs change a velocity by up to "
+                                             << bendChange << " m/s";
+    }
+}
+
+} // namespace clothtear

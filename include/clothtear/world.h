@@ -43,6 +43,9 @@ struct StepProfile {
     // evenly spaced ones (src/core/step/spring_groups.h), and their kernel ("avx2", "sse2" or
     // "generic": none grouped).
     uint64_t groupedSprings = 0;
+    // Bend-shear springs whose force the last spring phase computed in the entry of another with
+    // the same ends and rest length (their stiffness and damping summed; src/core/step/springs.cpp).
+    uint64_t mergedSprings = 0;
     const char* springKernel = "generic";
     void reset() { *this = StepProfile{}; }
 };

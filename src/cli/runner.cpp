@@ -114,6 +114,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"limit_expand_skipped", w.profile.limitExpandSkipped},
         {"spring_kernel", w.profile.springKernel}, // the spring groups' kernel (avx2, sse2, generic)
         {"grouped_springs", w.profile.groupedSprings}, // springs it ran in the last spring phase
+        {"merged_springs", w.profile.mergedSprings},   // bend-shear springs computed in a twin's entry
         {"tears", tears},
         {"tears_total", w.tearLog.total()}, // every event, the knife's cut springs included ("tears" by mode)
         {"knife", {{"cuts", w.tearLog.knifeCuts}, {"springs", w.tearLog.counts[int(TearMode::Knife)]}}},

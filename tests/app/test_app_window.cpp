@@ -317,11 +317,16 @@ TEST(AppWindow, ADragRipsWithoutScraps) {
 // patch out (2 pieces), drag 5 none. Drags 0 and 2 yank the cloth off the bottom of the screen at
 // 25-29 px a frame; until the hand stopped on the ground (tools.cpp, dragBeforeStep) they pulled
 // the held patch through the floor and left 6 / 13 and 4 / 21 pieces at 40 / 80 (37 and 23 at 160).
+// Now they leave 2-4, but which of those moves with round-off: with gravity 1e-6 stronger (9.81001)
+// drag 0 leaves 2 / 3 pieces at 40 / 80 and drag 2 2 / 3, against 2 / 2 for both at 9.81, and
+// merging the bend-shear springs with the same ends (springs.cpp, a change of summation order only)
+// gave 2 / 4 and 3 / 2. Their pieces are not compared (the scrap bound and the area still are).
 TEST(AppWindow, RandomDragsTearWithoutScraps) {
     REQUIRE_XVFB();
     std::mt19937 rng(2026);
     int tore[2] = {0, 0}; // drags that tore, at 40 and at 80
     int pieces[2] = {0, 0}; // pieces the drag left, at 40 and at 80
+    int compared = 0;       // drags whose pieces at 40 and 80 were compared
     auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (double(rng()) / 4294967296.0); };
     for (int d = 0; d < 6; ++d) {
         const double x = uniform(520, 880), y = uniform(200, 560), angle = uniform(0, 2 * M_PI);
@@ -353,8 +358,15 @@ TEST(AppWindow, RandomDragsTearWithoutScraps) {
             for (double a : report["pieces"]["areas"].get<std::vector<double>>()) total += a;
             EXPECT_NEAR(total, report["rest_area"].get<double>(), 1e-9) << where << ": no area lost";
         }
-        EXPECT_EQ(pieces[1], pieces[0]) << "drag " << d << ": pieces at 80 and at 40\n" << script.str();
+        // Where the hand ends, in screen pixels: drags 0 and 2 end 500-800 px below the screen's
+        // bottom (the hand on the ground), 3 and 4 less than 150 px.
+        const double endY = y + std::sin(angle) * speed * frames;
+        if (endY < 900) {
+            ++compared;
+            EXPECT_EQ(pieces[1], pieces[0]) << "drag " << d << ": pieces at 80 and at 40\n" << script.str();
+        }
     }
+    EXPECT_GE(compared, 4) << "drags whose pieces were compared across resolutions";
     EXPECT_GE(tore[0], 4) << "drags that tore at 40";
     EXPECT_GE(tore[1], 4) << "drags that tore at 80";
 }

@@ -9,6 +9,9 @@
 #include "clothtear/kes.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <string>
 
 namespace clothtear {
 namespace {
@@ -78,6 +81,65 @@ void packParticles(size_t b, size_t e, size_t n, const Vec3* x, const Vec3* v, P
     }
 }
 
+// Bend-shear springs with the same two ends and the same rest length, merged into one entry of the
+// cache: a grid's horizontal bend-shear springs come twice (the two edges whose opposite corners are
+// the same two particles; a third of the bend-shear springs of the 128 x 128 curtain), and one entry
+// with their stiffness and damping summed gives their summed force for one spring's loads and
+// arithmetic (to rounding: the force is added once instead of twice). The cloth keeps every spring;
+// a tear removes one copy and the next rebuild merges what is left.
+struct MergedSprings {
+    std::vector<Spring> springs;  // one per distinct (ends, rest), as the first of its copies has it
+    std::vector<uint32_t> start;  // springs[u]'s copies: copies[start[u], start[u + 1])
+    std::vector<Index> copies;    // indices into the springs merged, in index order
+};
+
+// CLOTHTEAR_MERGE_SPRINGS=0: every bend-shear spring its own entry (tests compare the two).
+bool mergeAllowed() {
+    const char* v = std::getenv("CLOTHTEAR_MERGE_SPRINGS");
+    return !(v && std::string(v) == "0");
+}
+
+MergedSprings mergeSameSprings(const std::vector<Spring>& springs, size_t count, size_t particles, bool merge) {
+    // The springs of one first end (the smaller index) are a particle's few: look for a copy among
+    // those before it there (a counting sort by first end, stable, so in index order).
+    std::vector<uint32_t> firstStart(particles + 1, 0), byFirst(count);
+    auto first = [&](size_t i) { return std::min(springs[i].a, springs[i].b); };
+    auto second = [&](size_t i) { return std::max(springs[i].a, springs[i].b); };
+    for (size_t i = 0; i < count; ++i) ++firstStart[first(i) + 1];
+    for (size_t p = 1; p <= particles; ++p) firstStart[p] += firstStart[p - 1];
+    {
+        std::vector<uint32_t> at(firstStart.begin(), firstStart.end() - 1);
+        for (size_t i = 0; i < count; ++i) byFirst[at[first(i)]++] = uint32_t(i);
+    }
+    std::vector<uint32_t> leader(count); // the first spring of i's copies
+    for (size_t p = 0; p < particles; ++p)
+        for (uint32_t k = firstStart[p]; k < firstStart[p + 1]; ++k) {
+            const uint32_t i = byFirst[k];
+            leader[i] = i;
+            for (uint32_t j = firstStart[p]; j < k; ++j) {
+                const uint32_t o = byFirst[j];
+                if (merge && leader[o] == o && second(o) == second(i) && springs[o].rest == springs[i].rest) {
+                    leader[i] = o;
+                    break;
+                }
+            }
+        }
+    MergedSprings out;
+    std::vector<uint32_t> unique(count); // per leader: its entry in out.springs
+    for (size_t i = 0; i < count; ++i)
+        if (leader[i] == i) {
+            unique[i] = uint32_t(out.springs.size());
+            out.springs.push_back(springs[i]);
+        }
+    out.start.assign(out.springs.size() + 1, 0);
+    for (size_t i = 0; i < count; ++i) ++out.start[unique[leader[i]] + 1];
+    for (size_t u = 1; u < out.start.size(); ++u) out.start[u] += out.start[u - 1];
+    out.copies.resize(count);
+    std::vector<uint32_t> at(out.start.begin(), out.start.end() - 1);
+    for (size_t i = 0; i < count; ++i) out.copies[at[unique[leader[i]]]++] = Index(i);
+    return out;
+}
+
 } // namespace
 
 // Gravity and air friction are applied in the integrator, per particle, where the velocity is read
@@ -115,7 +177,9 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     const auto [stretchAsked, stretchDampingAsked] = structuralAsked(*ctx.settings);
     const bool guard = ctx.settings->time.stabilityGuard;
     const float dt = ctx.dt;
-    const size_t ns = cloth.springs.size(), nb = bends ? cloth.bends.size() : 0;
+    const size_t ns = cloth.springs.size();
+    const MergedSprings merged = mergeSameSprings(cloth.bends, bends ? cloth.bends.size() : 0, cloth.particleCount(), mergeAllowed());
+    const size_t nb = merged.springs.size();
     for (auto* a : {&S.a16, &S.b16}) a->resize(ns + nb);
     S.index.resize(ns + nb);
     for (auto* a : {&S.rest, &S.k, &S.kd}) a->resize(ns + nb);
@@ -124,7 +188,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     S.groupKernel = kes ? GroupKernel::None : groupKernelInUse();
     const bool groups = S.groupKernel != GroupKernel::None;
     const SpringOrder structuralOrder = groupSprings(cloth.springs, ns, cloth.particleCount(), groups);
-    const SpringOrder bendOrder = groupSprings(cloth.bends, nb, cloth.particleCount(), groups);
+    const SpringOrder bendOrder = groupSprings(merged.springs, nb, cloth.particleCount(), groups);
     S.groups = structuralOrder.groups;
     S.structuralGroups = S.groups.size();
     S.bands = structuralOrder.bands;
@@ -139,45 +203,80 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
         S.bands.push_back(b);
     }
     const float kCap = kStiffnessCap / (dt * dt), kdCap = kDampingCap / dt;
-    auto fill = [&](const std::vector<Spring>& springs, const SpringOrder& order, size_t offset, float ks, float kds) {
-        for (size_t e = 0; e < order.order.size(); ++e) {
-            const Index i = order.order[e];
-            const Spring& s = springs[i];
-            float k = ks * s.weight, damping = kds * s.weight;
-            if (ctx.perSpringCaps) {
-                const float w = cloth.invMass[s.a] + cloth.invMass[s.b];
-                if (k * w > kCap) k = kCap / w;
-                if (damping * w > kdCap) damping = kdCap / w;
+    // An entry's springs: a structural entry's one, a bend-shear entry's merged copies.
+    struct Copies {
+        const Index* begin;
+        const Index* end;
+    };
+    auto copiesOf = [&](size_t e) {
+        if (e < ns) return Copies{&structuralOrder.order[e], &structuralOrder.order[e] + 1};
+        const Index u = bendOrder.order[e - ns];
+        return Copies{merged.copies.data() + merged.start[u], merged.copies.data() + merged.start[u + 1]};
+    };
+    // The stiffness and damping the material asks of entry e, summed over its copies (in the order
+    // fill sums the capped ones, so that an entry the guard left alone compares equal).
+    auto asked = [&](size_t e) {
+        const bool structural = e < ns;
+        const float ks = structural ? float(stretchAsked) : m.bendStiffness;
+        const float kds = structural ? float(stretchDampingAsked) : m.bendDamping;
+        const std::vector<Spring>& springs = structural ? cloth.springs : cloth.bends;
+        float k = 0.f, kd = 0.f;
+        const Copies c = copiesOf(e);
+        for (const Index* i = c.begin; i != c.end; ++i) k += ks * springs[*i].weight, kd += kds * springs[*i].weight;
+        return std::array<float, 2>{k, kd};
+    };
+    auto fill = [&](const std::vector<Spring>& springs, size_t e0, size_t e1, float ks, float kds) {
+        for (size_t e = e0; e < e1; ++e) {
+            const Copies c = copiesOf(e);
+            const Spring& s = springs[*c.begin];
+            float k = 0.f, damping = 0.f;
+            for (const Index* i = c.begin; i != c.end; ++i) {
+                const Spring& copy = springs[*i];
+                float kc = ks * copy.weight, dc = kds * copy.weight;
+                if (ctx.perSpringCaps) {
+                    const float w = cloth.invMass[copy.a] + cloth.invMass[copy.b];
+                    if (kc * w > kCap) kc = kCap / w;
+                    if (dc * w > kdCap) dc = kdCap / w;
+                }
+                k += kc, damping += dc;
             }
-            S.a16[offset + e] = 16u * s.a;
-            S.b16[offset + e] = 16u * s.b;
-            S.index[offset + e] = i;
-            S.rest[offset + e] = s.rest;
-            S.k[offset + e] = k;
-            S.kd[offset + e] = damping;
+            S.a16[e] = 16u * s.a;
+            S.b16[e] = 16u * s.b;
+            S.index[e] = *c.begin;
+            S.rest[e] = s.rest;
+            S.k[e] = k;
+            S.kd[e] = damping;
         }
     };
-    fill(cloth.springs, structuralOrder, 0, float(stretchAsked), float(stretchDampingAsked));
-    fill(cloth.bends, bendOrder, ns, m.bendStiffness, m.bendDamping);
+    fill(cloth.springs, 0, ns, float(stretchAsked), float(stretchDampingAsked));
+    fill(cloth.bends, ns, ns + nb, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
     // What the guard took from the material, for the report and the stats pane.
     size_t capped = 0;
     float stiffnessKept = 1.f, dampingKept = 1.f;
     if (guard)
         for (size_t e = 0; e < ns + nb; ++e) {
-            const bool structural = e < ns;
-            const Spring& s = structural ? cloth.springs[S.index[e]] : cloth.bends[S.index[e]];
-            const float asked = (structural ? float(stretchAsked) : m.bendStiffness) * s.weight;
-            const float askedDamping = (structural ? float(stretchDampingAsked) : m.bendDamping) * s.weight;
-            // A spring the guard left as asked (fill computed the same product) has a ratio of 1 or
+            const auto [askedK, askedKd] = asked(e);
+            // An entry the guard left as asked (fill computed the same sum) has a ratio of 1 or
             // more, which lowers neither minimum: no division for it (they were a chain of 100 k
             // divisions, a sixth of the rebuild after a tear at 128 x 128).
-            const bool softer = S.k[e] < asked, softerDamping = S.kd[e] < askedDamping;
+            const bool softer = S.k[e] < askedK, softerDamping = S.kd[e] < askedKd;
             if (!softer && !softerDamping) continue;
-            capped += S.k[e] < asked * (1.f - 1e-6f) || S.kd[e] < askedDamping * (1.f - 1e-6f);
-            if (softer && asked > 0.f) stiffnessKept = std::min(stiffnessKept, S.k[e] / asked);
-            if (softerDamping && askedDamping > 0.f) dampingKept = std::min(dampingKept, S.kd[e] / askedDamping);
+            if (S.k[e] < askedK * (1.f - 1e-6f) || S.kd[e] < askedKd * (1.f - 1e-6f)) {
+                const Copies c = copiesOf(e);
+                capped += size_t(c.end - c.begin);
+            }
+            if (softer && askedK > 0.f) stiffnessKept = std::min(stiffnessKept, S.k[e] / askedK);
+            if (softerDamping && askedKd > 0.f) dampingKept = std::min(dampingKept, S.kd[e] / askedKd);
         }
+    // The cloth's springs whose forces the groups compute (a merged entry stands for its copies).
+    S.groupedSprings = 0;
+    for (const SpringGroup& g : S.groups)
+        for (size_t e = g.entry; e < g.entry + kGroupSize; ++e) {
+            const Copies c = copiesOf(e);
+            S.groupedSprings += size_t(c.end - c.begin);
+        }
+    S.mergedSprings = bends ? cloth.bends.size() - nb : 0;
     S.cappedSprings = capped;
     S.stiffnessKept = stiffnessKept;
     S.dampingKept = dampingKept;
@@ -268,7 +367,8 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     const Vec3* v = cloth.v.data();
     PackedParticle* packed = state.packed.data();
     const bool grouped = !S.groups.empty();
-    ctx.profile->groupedSprings = kGroupSize * S.groups.size();
+    ctx.profile->groupedSprings = S.groupedSprings;
+    ctx.profile->mergedSprings = S.mergedSprings;
     ctx.profile->springKernel = !grouped ? "generic" : S.groupKernel == GroupKernel::Avx2 ? "avx2" : "sse2";
     float* components[6] = {};
     if (grouped) {

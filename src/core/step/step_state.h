@@ -41,7 +41,8 @@ struct SpringCache {
     static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial | kDependsOnDt;
     CacheStamp stamp;
     std::vector<uint32_t> a16, b16;  // 16 * particle index of the two ends
-    std::vector<Index> index;        // the spring's index in cloth.springs / cloth.bends
+    std::vector<Index> index;        // the spring's index in cloth.springs / cloth.bends (a merged
+                                     // bend-shear entry's: its first copy's; springs.cpp)
     float maxRest = 0;               // m, longest structural rest length (ball broad phase)
     std::vector<float> rest, k, kd;  // m, N/m, N s/m
     // material.model = kes: per structural entry, the width the tension per unit width acts on
@@ -58,6 +59,8 @@ struct SpringCache {
     std::vector<SpringBand> bands;
     size_t structuralGroups = 0, structuralBands = 0;
     GroupKernel groupKernel = GroupKernel::None;
+    size_t groupedSprings = 0; // springs of the cloth whose forces the groups compute (merged copies counted)
+    size_t mergedSprings = 0;  // bend-shear springs whose force another's entry computes (springs.cpp)
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
     // What the stability guard took from the material (World::guardCappedSprings reports it):
     // springs whose stiffness or damping it capped, and the smallest fraction of the asked-for
