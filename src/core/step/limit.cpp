@@ -492,13 +492,16 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::ve
     // of p is written past the list's end and the count moves on by the ones taken. Within one
     // call no spring is taken from both ends (`fromOtherEnd`), so `listed` reads here as it read
     // with a branch on each test in turn.
-    size_t n = list.size();
+    // Room for every spring of every moved particle, made once (a resize per particle zero-filled
+    // its room and checked the capacity each time).
+    size_t n = list.size(), room = 0;
+    for (Index p : moved) room += start[p + 1] - start[p];
+    list.resize(n + room);
+    Index* out = list.data();
     for (Index p : moved) {
         const Vec3 xp = x[p];
         const uint8_t fp = flags[p];
         const uint32_t k0 = start[p], k1 = start[p + 1];
-        list.resize(n + (k1 - k0));
-        Index* out = list.data();
         for (uint32_t k = k0; k < k1; ++k) {
             const LimitCache::SpringEnd e = ends[k];
             const Index i = e.spring, q = e.other;
