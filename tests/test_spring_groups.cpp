@@ -16,14 +16,18 @@
 namespace clothtear {
 namespace {
 
-// CLOTHTEAR_SPRING_KERNEL for the worlds loaded while it lives (the spring cache reads it when it
-// is built, at a loaded world's first sub-step).
-class KernelScope {
+// An environment switch of the spring cache (CLOTHTEAR_SPRING_KERNEL, CLOTHTEAR_MERGE_SPRINGS) for
+// the worlds loaded while it lives (the cache reads it when it is built, at a loaded world's first
+// sub-step).
+class EnvScope {
 public:
-    explicit KernelScope(const char* kernel) { setenv("CLOTHTEAR_SPRING_KERNEL", kernel, 1); }
-    ~KernelScope() { unsetenv("CLOTHTEAR_SPRING_KERNEL"); }
-    KernelScope(const KernelScope&) = delete;
-    KernelScope& operator=(const KernelScope&) = delete;
+    EnvScope(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
+    ~EnvScope() { unsetenv(name_); }
+    EnvScope(const EnvScope&) = delete;
+    EnvScope& operator=(const EnvScope&) = delete;
+
+private:
+    const char* name_;
 };
 
 // The pull scene at 40 a side, pulled at 30 deg in a 2 m/s wind, after 0.75 s: torn (the rip starts
@@ -66,7 +70,7 @@ bool cpuHasAvx2() {
 TEST(SpringGroups, GroupedKernelsGiveTheForcesOfTheGenericLoop) {
     const std::string bytes = tornPullBytes();
     auto oneSubStep = [&](const char* kernel) {
-        KernelScope scope(kernel);
+        EnvScope scope("CLOTHTEAR_SPRING_KERNEL", kernel);
         World w = loaded(bytes);
         w.settings.limit.enabled = false;
         w.settings.tear.enabled = false;
@@ -102,7 +106,7 @@ TEST(SpringGroups, SseAndAvxKernelsGiveTheSameBits) {
     if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: both would run the SSE2 kernel";
     const std::string bytes = tornPullBytes();
     auto run = [&](const char* kernel) {
-        KernelScope scope(kernel);
+        EnvScope scope("CLOTHTEAR_SPRING_KERNEL", kernel);
         World w = loaded(bytes);
         const double end = w.time + 0.5;
         while (w.time < end) w.step();
@@ -114,31 +118,14 @@ TEST(SpringGroups, SseAndAvxKernelsGiveTheSameBits) {
     EXPECT_EQ(stateHash(sse), stateHash(avx));
 }
 
-} // namespace clothtear
-
-namespace clothtear {
-namespace {
-
-// CLOTHTEAR_MERGE_SPRINGS for the worlds stepped while it lives (read when the spring cache is built).
-class MergeScope {
-public:
-    explicit MergeScope(bool merge) {
-        if (!merge) setenv("CLOTHTEAR_MERGE_SPRINGS", "0", 1);
-    }
-    ~MergeScope() { unsetenv("CLOTHTEAR_MERGE_SPRINGS"); }
-    MergeScope(const MergeScope&) = delete;
-    MergeScope& operator=(const MergeScope&) = delete;
-};
-
-} // namespace
 
 // Bend-shear springs with the same ends and rest length share one entry of the spring cache, their
 // stiffness and damping summed (springs.cpp). One sub-step with only the springs, gravity and air
 // acting, with and without the merge: the same velocities up to rounding, relative to the sub-step's
 // largest velocity change from the bend-shear springs alone (a copy left out, or counted twice,
-// changes a velocity by its force, about as much as that). On the grid of n x n particles every
-// quad's diagonal and both its neighbours across it make a bend-shear spring twice: (n - 2)^2 of
-// them are merged. On the torn pull sheet (new particles and springs past the grid's) and on the
+// changes a velocity by its force, about as much as that). On the grid of n x n particles the
+// bend-shear springs that span two columns or two rows come twice (two edges whose opposite corners
+// are the same two particles): (n - 2)^2 of them are merged. On the torn pull sheet (new particles and springs past the grid's) and on the
 // irregular mesh, whose twins can differ in weight, the same.
 TEST(SpringGroups, MergedBendShearTwinsGiveTheForcesOfBoth) {
     struct Case {
@@ -161,7 +148,7 @@ TEST(SpringGroups, MergedBendShearTwinsGiveTheForcesOfBoth) {
     };
     for (const Case& c : cases) {
         auto oneSubStep = [&](bool merge, float bendScale) {
-            MergeScope scope(merge);
+            EnvScope scope("CLOTHTEAR_MERGE_SPRINGS", merge ? "1" : "0");
             World w = loaded(c.bytes);
             w.settings.limit.enabled = false;
             w.settings.tear.enabled = false;

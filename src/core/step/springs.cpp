@@ -82,11 +82,11 @@ void packParticles(size_t b, size_t e, size_t n, const Vec3* x, const Vec3* v, P
 }
 
 // Bend-shear springs with the same two ends and the same rest length, merged into one entry of the
-// cache: a grid's horizontal bend-shear springs come twice (the two edges whose opposite corners are
-// the same two particles; a third of the bend-shear springs of the 128 x 128 curtain), and one entry
-// with their stiffness and damping summed gives their summed force for one spring's loads and
-// arithmetic (to rounding: the force is added once instead of twice). The cloth keeps every spring;
-// a tear removes one copy and the next rebuild merges what is left.
+// cache: a grid's bend-shear springs that span two columns or two rows come twice (the two edges
+// whose opposite corners are the same two particles; a third of the bend-shear springs of the 128 x
+// 128 curtain), and one entry with their stiffness and damping summed gives their summed force for
+// one spring's loads and arithmetic (to rounding: the force is added once instead of twice). The
+// cloth keeps every spring; a tear removes one copy and the next rebuild merges what is left.
 struct MergedSprings {
     std::vector<Spring> springs;  // one per distinct (ends, rest), as the first of its copies has it
     std::vector<uint32_t> start;  // springs[u]'s copies: copies[start[u], start[u + 1])
