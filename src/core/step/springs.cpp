@@ -174,7 +174,9 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     // kes: the structural springs follow the tensile law (kesWidth below) and hinges replace the
     // bend-shear springs (phaseSpringsKes); the guard caps the law's largest tangent.
     const bool bends = !kes && (m.bendStiffness > 0.f || m.bendDamping > 0.f);
-    const auto [stretchAsked, stretchDampingAsked] = structuralAsked(*ctx.settings);
+    // Plain copies, not a structured binding: clang 14 cannot capture bindings in the lambdas below.
+    const std::pair<double, double> structuralK = structuralAsked(*ctx.settings);
+    const double stretchAsked = structuralK.first, stretchDampingAsked = structuralK.second;
     const bool guard = ctx.settings->time.stabilityGuard;
     const float dt = ctx.dt;
     const size_t ns = cloth.springs.size();
