@@ -5,24 +5,29 @@
 # principal axis (the tear events' rest positions; degrees from horizontal, so the axis across a
 # pull at angle a is a), its length along that axis, the pieces and the smallest piece.
 # Usage, from the repository root:
-#   sh bench/gestures/pull_rips.sh [path/to/clothtear] [angles] [resolutions]
+#   sh bench/gestures/pull_rips.sh [path/to/clothtear] [angles] [resolutions] [hand speeds] [seconds]
 #   e.g. sh bench/gestures/pull_rips.sh build/release/src/app/clothtear "0 30 60 90" "40 80 160"
+# A rip's length moves with the round-off (one run can be 1.6 m and the next, 1e-4 m/s faster, 3.1 m):
+# compare resolutions over several hand speeds a little apart, e.g. "0.4999 0.5 0.5001", not one run.
 set -eu
 BIN=${1:-build/release/src/app/clothtear}
 ANGLES=${2:-0 30 60 90}
 RES=${3:-40 80 160}
-echo "angle   res  tears  first (s)  axis (deg)  length (m)  pieces  smallest (m^2)"
+SPEEDS=${4:-0.5}
+SECONDS_RUN=${5:-4}
+echo "angle   res  speed  tears  first (s)  axis (deg)  length (m)  pieces  smallest (m^2)"
 for a in $ANGLES; do
     for n in $RES; do
-        "$BIN" --headless --scene pull --seconds 4 --set pull.angle="$a" --set cloth.resolution_x="$n" \
-            --set cloth.resolution_y="$n" --json - | python3 -c '
+      for v in $SPEEDS; do
+        "$BIN" --headless --scene pull --seconds "$SECONDS_RUN" --set pull.angle="$a" --set pull.speed="$v" \
+            --set cloth.resolution_x="$n" --set cloth.resolution_y="$n" --json - | python3 -c '
 import json, math, sys
-a, n = sys.argv[1], sys.argv[2]
+a, n, v = sys.argv[1], sys.argv[2], sys.argv[3]
 r = json.load(sys.stdin)
 ev = r["tear_events"]
 pieces = r["pieces"]
 if not ev:
-    print(f"{a:>5} {n:>5} {0:6d}"); sys.exit()
+    print(f"{a:>5} {n:>5} {v:>6} {0:6d}"); sys.exit()
 xs = [e["rest"][0] for e in ev]; ys = [e["rest"][1] for e in ev]
 mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
 sxx = sum((x - mx) ** 2 for x in xs); syy = sum((y - my) ** 2 for y in ys)
@@ -30,7 +35,8 @@ sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
 th = 0.5 * math.atan2(2 * sxy, sxx - syy)
 p = [(x - mx) * math.cos(th) + (y - my) * math.sin(th) for x, y in zip(xs, ys)]
 first, count, smallest = ev[0]["time"], pieces["count"], pieces["smallest_area"]
-print(f"{a:>5} {n:>5} {len(ev):6d} {first:10.2f} {math.degrees(th):11.1f} {max(p) - min(p):11.2f} {count:7d} {smallest:15.3f}")
-' "$a" "$n"
+print(f"{a:>5} {n:>5} {v:>6} {len(ev):6d} {first:10.2f} {math.degrees(th):11.1f} {max(p) - min(p):11.2f} {count:7d} {smallest:15.3f}")
+' "$a" "$n" "$v"
+      done
     done
 done
