@@ -37,6 +37,7 @@
 //               particles it moved that it pushed over (particle-spring table), so a pass covers
 //               what a full pass would correct; they stop when a pass corrects nothing (passCap:
 //               at most). At rest that is a few hundred springs, not all of them, per sub-step.
+#include "env_switch.h"
 #include "kernels.h"
 #include "limit_kernels.h"
 #include "parallel.h"
@@ -46,7 +47,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <string>
@@ -62,10 +62,7 @@ bool driversMove(const std::vector<Driver>& drivers) {
 
 namespace {
 
-bool limitSkipsAllowed() {
-    const char* v = std::getenv("CLOTHTEAR_LIMIT_SKIPS");
-    return !(v && std::string(v) == "0");
-}
+bool limitSkipsAllowed() { return envSwitchOn("CLOTHTEAR_LIMIT_SKIPS"); }
 
 // Sub-steps the expand prefilter rests after it found springs over the limit (prefilterPays).
 constexpr uint32_t kPrefilterWait = 4;

@@ -1,5 +1,6 @@
 // The springs: per-thread force buffers, the spring cache with the stability guard's caps, and the
 // structural and bend-shear spring forces (kernels: kernels.h).
+#include "env_switch.h"
 #include "kernels.h"
 #include "parallel.h"
 #include "phases.h"
@@ -10,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <string>
 
 namespace clothtear {
@@ -94,10 +94,7 @@ struct MergedSprings {
 };
 
 // CLOTHTEAR_MERGE_SPRINGS=0: every bend-shear spring its own entry (tests compare the two).
-bool mergeAllowed() {
-    const char* v = std::getenv("CLOTHTEAR_MERGE_SPRINGS");
-    return !(v && std::string(v) == "0");
-}
+bool mergeAllowed() { return envSwitchOn("CLOTHTEAR_MERGE_SPRINGS"); }
 
 MergedSprings mergeSameSprings(const std::vector<Spring>& springs, size_t count, size_t particles, bool merge) {
     // The springs of one first end (the smaller index) are a particle's few: look for a copy among

@@ -1,0 +1,15 @@
+// Switches for tests and benchmarks that compare an exact shortcut of the step with the long way
+// (CLOTHTEAR_LIMIT_SKIPS, CLOTHTEAR_MERGE_SPRINGS): on unless the variable is "0". Read where a
+// cache is built or a solve starts, never per particle.
+#pragma once
+#include <cstdlib>
+#include <cstring>
+
+namespace clothtear {
+
+inline bool envSwitchOn(const char* name) {
+    const char* v = std::getenv(name);
+    return !(v && std::strcmp(v, "0") == 0);
+}
+
+} // namespace clothtear
