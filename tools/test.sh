@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # What CI runs (.ci/run): installs what is missing, builds everything in Release and runs the whole
 # test suite; then the core and tearing tests again under AddressSanitizer + UndefinedBehaviorSanitizer;
-# then a short run of every fuzzer (tools/fuzz.sh). About 13 minutes on 2 cores from a fresh clone
-# (CI's machine: 765 s up to the fuzz build); 35 minutes once on a 2-core VM running at about 0.4 x
-# its usual speed, before the slowest outcome tests were left out of the sanitizer run below.
+# then a short run of every fuzzer (tools/fuzz.sh). About 16 minutes on CI's 2 cores from a fresh
+# clone (765 s there up to the fuzz build); 35 minutes once on a 2-core VM running at about 0.4 x its
+# usual speed, before the slowest outcome tests were left out of the sanitizer run below.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh
