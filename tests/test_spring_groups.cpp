@@ -125,8 +125,8 @@ TEST(SpringGroups, SseAndAvxKernelsGiveTheSameBits) {
 // largest velocity change from the bend-shear springs alone (a copy left out, or counted twice,
 // changes a velocity by its force, about as much as that). On the grid of n x n particles the
 // bend-shear springs that span two columns or two rows come twice (two edges whose opposite corners
-// are the same two particles): (n - 2)^2 of them are merged. On the torn pull sheet (new particles and springs past the grid's) and on the
-// irregular mesh, whose twins can differ in weight, the same.
+// are the same two particles): (n - 2)^2 of them are merged. On the torn pull sheet (new particles
+// and springs past the grid's) and on the irregular mesh, whose twins can differ in weight, the same.
 TEST(SpringGroups, MergedBendShearTwinsGiveTheForcesOfBoth) {
     struct Case {
         const char* what;

@@ -117,7 +117,11 @@ void springSumsPerParticle(const Cloth& cloth, const Settings& settings, std::ve
 // N s/m): material.stretch_*, or with material.model = kes the tensile law's largest tangent over
 // kesStrainRange, times kesGuardWeight (5 with forward Euler: its Rayleigh damping; kes.h) (the
 // guard's and the spring cache's "asked for").
-std::pair<double, double> structuralAsked(const Settings& settings);
+struct AskedStiffness {
+    double stiffness; // N/m per unit weight
+    double damping;   // N s/m per unit weight
+};
+AskedStiffness structuralAsked(const Settings& settings);
 
 class World {
 public:

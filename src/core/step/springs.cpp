@@ -171,9 +171,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     // kes: the structural springs follow the tensile law (kesWidth below) and hinges replace the
     // bend-shear springs (phaseSpringsKes); the guard caps the law's largest tangent.
     const bool bends = !kes && (m.bendStiffness > 0.f || m.bendDamping > 0.f);
-    // Plain copies, not a structured binding: clang 14 cannot capture bindings in the lambdas below.
-    const std::pair<double, double> structuralK = structuralAsked(*ctx.settings);
-    const double stretchAsked = structuralK.first, stretchDampingAsked = structuralK.second;
+    const AskedStiffness stretchAsked = structuralAsked(*ctx.settings);
     const bool guard = ctx.settings->time.stabilityGuard;
     const float dt = ctx.dt;
     const size_t ns = cloth.springs.size();
@@ -216,8 +214,8 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     // fill sums the capped ones, so that an entry the guard left alone compares equal).
     auto asked = [&](size_t e) {
         const bool structural = e < ns;
-        const float ks = structural ? float(stretchAsked) : m.bendStiffness;
-        const float kds = structural ? float(stretchDampingAsked) : m.bendDamping;
+        const float ks = structural ? float(stretchAsked.stiffness) : m.bendStiffness;
+        const float kds = structural ? float(stretchAsked.damping) : m.bendDamping;
         const std::vector<Spring>& springs = structural ? cloth.springs : cloth.bends;
         float k = 0.f, kd = 0.f;
         const Copies c = copiesOf(e);
@@ -247,7 +245,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
             S.kd[e] = damping;
         }
     };
-    fill(cloth.springs, 0, ns, float(stretchAsked), float(stretchDampingAsked));
+    fill(cloth.springs, 0, ns, float(stretchAsked.stiffness), float(stretchAsked.damping));
     fill(cloth.bends, ns, ns + nb, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
     // What the guard took from the material, for the report and the stats pane.
@@ -286,7 +284,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
         S.kesWidth.resize(ns);
         for (size_t e = 0; e < ns; ++e) {
             const Spring& s = cloth.springs[S.index[e]];
-            const float asked = float(stretchAsked) * s.weight;
+            const float asked = float(stretchAsked.stiffness) * s.weight;
             const float kept = asked > 0.f ? std::min(1.f, S.k[e] / asked) : 1.f;
             S.kesWidth[e] = s.weight * s.rest * kept;
         }

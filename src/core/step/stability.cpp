@@ -29,7 +29,7 @@ namespace clothtear {
 // The stiffness each kind of spring asks for, per unit weight: the linear material's, or with
 // material.model = kes the tensile law's largest tangent over the strains the step lets a spring
 // reach (kesStrainRange), and no bend-shear springs (hinges instead, added by addHinges).
-std::pair<double, double> structuralAsked(const Settings& s) {
+AskedStiffness structuralAsked(const Settings& s) {
     if (s.material.model == MaterialModel::Kes)
         return {kesGuardWeight(s) * kesMaxTangent(kesLawSI(s.material), kesStrainRange(s)), s.material.stretchDamping};
     return {s.material.stretchStiffness, s.material.stretchDamping};
@@ -62,8 +62,8 @@ void springSumsPerParticle(const Cloth& cloth, const Settings& settings, std::ve
                 kd[p] += kds * s.weight;
             }
     };
-    const auto [ks, kds] = structuralAsked(settings);
-    add(cloth.springs, ks, kds);
+    const AskedStiffness asked = structuralAsked(settings);
+    add(cloth.springs, asked.stiffness, asked.damping);
     if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
     addHinges(cloth, settings, k);
 }
@@ -102,8 +102,8 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
                 for (Index p : {s.a, s.b}) springStep[p] = std::min(springStep[p], step);
             }
         };
-        const auto [ks, kds] = structuralAsked(settings);
-        add(cloth.springs, ks, kds);
+        const AskedStiffness asked = structuralAsked(settings);
+        add(cloth.springs, asked.stiffness, asked.damping);
         if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
     }
     // The guard's budget and the air drag's share of it (guardParticleBudget counts it too).
