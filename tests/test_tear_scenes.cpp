@@ -240,3 +240,30 @@ TEST(TearScenes, SlantedPullsLeaveNoScraps) {
             EXPECT_NEAR(total, 36.0, 1e-6) << "every rest m^2 of the 6 m sheet is in one of its pieces";
         }
 }
+
+// The same bound whatever the round-off: on one thread and with hand speeds 1e-4 m/s apart, which
+// tear differently (other pieces, other places). While a one-point split kept on only fans of under
+// 1.5 squared mean rest lengths (3.9 rest triangles of a grid), the 60 deg pull at 80 a side set
+// loose a piece of 0.012 m^2 (4.0 triangles, under the bound of five) in 3 of 21 hand speeds from
+// 0.499 to 0.501 m/s on one thread, 0.5 among them, though not on two threads, where the test above
+// runs (bench/README.md, "No confetti: the bound the tests hold"). Now the split keeps on up to 2.0
+// (5.2 triangles): minLooseArea, cloth.h.
+TEST(TearScenes, SlantedPullsLeaveNoScrapsWhateverTheRoundOff) {
+    for (int angle : {60, 90})
+        for (const char* speed : {"0.4991", "0.5", "0.5005"}) {
+            const int res = 80;
+            const std::string r = std::to_string(res);
+            const nlohmann::json j = runScene("pull", 4.0,
+                                              "--set pull.angle=" + std::to_string(angle) + " --set pull.speed=" + speed +
+                                                  " --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r,
+                                              1);
+            const Rip rip = ripOf(j);
+            const double spacing = 6.0 / (res - 1), restTriangle = 0.5 * spacing * spacing;
+            const std::string where = std::to_string(angle) + " deg, " + speed + " m/s";
+            EXPECT_GE(rip.tears, 5u) << where << ": the pull tears";
+            EXPECT_GT(rip.smallestPiece, 5 * restTriangle) << where << ": " << rip.pieces << " pieces";
+            double total = 0;
+            for (double a : j["pieces"]["areas"].get<std::vector<double>>()) total += a;
+            EXPECT_NEAR(total, 36.0, 1e-6) << where << ": no area lost";
+        }
+}

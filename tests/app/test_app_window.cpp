@@ -284,8 +284,8 @@ TEST(AppWindow, ReplayIsBitIdenticalRunToRun) {
 
 // Issue 13 goal 2, no confetti, as a user drags: the README's drag (assets/screenshots/drag.txt, the
 // script its pictures are made with: down and sideways, held) at 40
-// and 80 a side tears the curtain, and every piece it leaves is at least four rest triangles of its
-// mesh. At 40 a tear front halving the same corner again had set loose a 1.6 cm^2 sliver (1/8 of a
+// and 80 a side tears the curtain, and every piece it leaves is at least five rest triangles of its
+// mesh (a one-point split keeps smaller ones on: minLooseArea, cloth.h, 5.2 rest triangles of a grid). At 40 a tear front halving the same corner again had set loose a 1.6 cm^2 sliver (1/8 of a
 // rest triangle; minTearSplitRest, cloth.h); at 40 and 80 the rip leaves the lower right part hanging
 // by the right edge. The rip leans the same way at both (issue 13 goal 1): 47 and 42 deg from
 // horizontal; 24 and 40 when the limit's passes under the hand were a fixed 12, not an eighth of the
@@ -302,7 +302,7 @@ TEST(AppWindow, ADragRipsWithoutScraps) {
         const auto report = readJson(json);
         EXPECT_GT(report["tears_total"].get<int>(), 10) << n << ": the drag tears";
         const double restTriangle = report["rest_area"].get<double>() / (2.0 * (n - 1) * (n - 1));
-        EXPECT_GE(report["pieces"]["smallest_area"].get<double>(), 4.0 * restTriangle)
+        EXPECT_GE(report["pieces"]["smallest_area"].get<double>(), 5.0 * restTriangle)
             << n << ": " << report["pieces"]["count"] << " pieces, areas " << report["pieces"]["areas"];
         double total = 0;
         for (double a : report["pieces"]["areas"].get<std::vector<double>>()) total += a;
@@ -314,10 +314,10 @@ TEST(AppWindow, ADragRipsWithoutScraps) {
 
 // Issue 13 goal 2, no confetti, over drags nobody chose: six drags drawn from a fixed seed (a grab
 // anywhere on the curtain as the start camera shows it, any direction, 3 to 30 px a frame for 20 to
-// 50 frames, then held), each at 40 and 80 a side. No piece a drag leaves is smaller than 3.5 rest
+// 50 frames, then held), each at 40 and 80 a side. No piece a drag leaves is smaller than 5 rest
 // triangles of its mesh, and no area is lost. The bound: a one-point split keeps on a fan of less
-// than minLooseArea (cloth.h, 1.5 squared mean rest lengths: 3.9 rest triangles of this grid), so
-// pieces of 4 triangles are allowed, and a bound of exactly 4 would sit on round-off. Most drags tear
+// than minLooseArea (cloth.h, 2 squared mean rest lengths: 5.2 rest triangles of this grid; it was
+// 1.5, 3.9 triangles, and this bound 3.5). Most drags tear
 // (a slow lift of the cloth does not, as it should not: drag 5 lifts it 0.3 m), so the check is not
 // vacuous. And a drag leaves as many pieces at 80 as at 40 (issue 13 goal 1): five tear the held
 // patch out (2 pieces), drag 5 none. Drags 0 and 2 yank the cloth off the bottom of the screen at
@@ -357,7 +357,7 @@ TEST(AppWindow, RandomDragsTearWithoutScraps) {
             tore[fine] += report["tears_total"].get<int>() > 0;
             pieces[fine] = report["pieces"]["count"].get<int>();
             const double restTriangle = report["rest_area"].get<double>() / (2.0 * (n - 1) * (n - 1));
-            EXPECT_GE(report["pieces"]["smallest_area"].get<double>(), 3.5 * restTriangle)
+            EXPECT_GE(report["pieces"]["smallest_area"].get<double>(), 5.0 * restTriangle)
                 << where << ": " << report["pieces"]["count"] << " pieces, areas " << report["pieces"]["areas"] << "\n"
                 << script.str();
             double total = 0;
