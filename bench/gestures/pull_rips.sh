@@ -9,12 +9,16 @@
 #   e.g. sh bench/gestures/pull_rips.sh build/release/src/app/clothtear "0 30 60 90" "40 80 160"
 # A rip's length moves with the round-off (one run can be 1.6 m and the next, 1e-4 m/s faster, 3.1 m):
 # compare resolutions over several hand speeds a little apart, e.g. "0.4999 0.5 0.5001", not one run.
+# With more than one speed a summary per angle and resolution follows the runs: the median length and
+# axis, and how many runs left each number of pieces.
 set -eu
 BIN=${1:-build/release/src/app/clothtear}
 ANGLES=${2:-0 30 60 90}
 RES=${3:-40 80 160}
 SPEEDS=${4:-0.5}
 SECONDS_RUN=${5:-4}
+ROWS=$(mktemp)
+trap 'rm -f "$ROWS"' EXIT
 echo "angle   res  speed  tears  first (s)  axis (deg)  length (m)  pieces  smallest (m^2)"
 for a in $ANGLES; do
     for n in $RES; do
@@ -36,7 +40,23 @@ th = 0.5 * math.atan2(2 * sxy, sxx - syy)
 p = [(x - mx) * math.cos(th) + (y - my) * math.sin(th) for x, y in zip(xs, ys)]
 first, count, smallest = ev[0]["time"], pieces["count"], pieces["smallest_area"]
 print(f"{a:>5} {n:>5} {v:>6} {len(ev):6d} {first:10.2f} {math.degrees(th):11.1f} {max(p) - min(p):11.2f} {count:7d} {smallest:15.3f}")
-' "$a" "$n" "$v"
+' "$a" "$n" "$v" | tee -a "$ROWS"
       done
     done
 done
+[ "$(echo $SPEEDS | wc -w)" -gt 1 ] || exit 0
+python3 - "$ROWS" <<'PY'
+import collections, statistics, sys
+runs = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    f = line.split()
+    runs[(int(f[0]), int(f[1]))].append(f)
+print("angle   res  runs  median length (m)  median axis (deg)  runs by pieces")
+for (a, n), rows in sorted(runs.items()):
+    torn = [r for r in rows if len(r) > 4]
+    length = statistics.median(float(r[6]) for r in torn) if torn else 0.0
+    axis = statistics.median(float(r[5]) for r in torn) if torn else 0.0
+    pieces = collections.Counter(int(r[7]) if len(r) > 4 else 1 for r in rows)
+    by = ", ".join(f"{k}: {pieces[k]}" for k in sorted(pieces))
+    print(f"{a:>5} {n:>5} {len(rows):5d} {length:18.2f} {axis:18.1f}  {by}")
+PY
