@@ -215,6 +215,25 @@ TEST(TearScenes, PulledSidewaysTheRipLeansTheSameWayAtTwoResolutions) {
     }
 }
 
+namespace {
+// The pull on the 6 m sheet at `res` a side for 4 s (`extra`: more --set options, `threads` as
+// runScene's) tears, leaves no piece under five rest triangles of the mesh and loses no area.
+void expectPullLeavesNoScraps(int angle, int res, const std::string& extra, int threads, const std::string& where) {
+    const std::string r = std::to_string(res);
+    const nlohmann::json j = runScene("pull", 4.0,
+                                      "--set pull.angle=" + std::to_string(angle) + " --set cloth.resolution_x=" + r +
+                                          " --set cloth.resolution_y=" + r + extra,
+                                      threads);
+    const Rip rip = ripOf(j);
+    const double spacing = 6.0 / (res - 1), restTriangle = 0.5 * spacing * spacing;
+    EXPECT_GE(rip.tears, 5u) << where << ": the pull tears";
+    EXPECT_GT(rip.smallestPiece, 5 * restTriangle) << where << ": " << rip.pieces << " pieces";
+    double total = 0;
+    for (double a : j["pieces"]["areas"].get<std::vector<double>>()) total += a;
+    EXPECT_NEAR(total, 36.0, 1e-6) << where << ": every rest m^2 of the 6 m sheet is in one of its pieces";
+}
+} // namespace
+
 // Issue 13 goal 2, no confetti: pulled at a slant or sideways, the hand tears the sheet and may tear
 // its patch out, but no piece of a few rest triangles comes loose. Before the drivers' cap a 128 a
 // side drag left a two-triangle scrap; a one-point split that sets loose a fan of one or two
@@ -227,18 +246,8 @@ TEST(TearScenes, PulledSidewaysTheRipLeansTheSameWayAtTwoResolutions) {
 // and 80 a side on four threads: the area is checked over every piece, not the sheet and the patch.
 TEST(TearScenes, SlantedPullsLeaveNoScraps) {
     for (int angle : {30, 60, 90})
-        for (int res : {40, 80}) {
-            const std::string r = std::to_string(res);
-            const nlohmann::json j = runScene("pull", 4.0, "--set pull.angle=" + std::to_string(angle) +
-                                                               " --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r);
-            const Rip rip = ripOf(j);
-            const double spacing = 6.0 / (res - 1), restTriangle = 0.5 * spacing * spacing;
-            EXPECT_GE(rip.tears, 5u) << angle << " deg at " << res << ": the pull tears";
-            EXPECT_GT(rip.smallestPiece, 5 * restTriangle) << angle << " deg at " << res << ": " << rip.pieces << " pieces";
-            double total = 0;
-            for (double a : j["pieces"]["areas"].get<std::vector<double>>()) total += a;
-            EXPECT_NEAR(total, 36.0, 1e-6) << "every rest m^2 of the 6 m sheet is in one of its pieces";
-        }
+        for (int res : {40, 80})
+            expectPullLeavesNoScraps(angle, res, "", 0, std::to_string(angle) + " deg at " + std::to_string(res));
 }
 
 // The same bound whatever the round-off: on one thread and with hand speeds 1e-4 m/s apart, which
@@ -250,20 +259,7 @@ TEST(TearScenes, SlantedPullsLeaveNoScraps) {
 // (5.2 triangles): minLooseArea, cloth.h.
 TEST(TearScenes, SlantedPullsLeaveNoScrapsWhateverTheRoundOff) {
     for (int angle : {60, 90})
-        for (const char* speed : {"0.4991", "0.5", "0.5005"}) {
-            const int res = 80;
-            const std::string r = std::to_string(res);
-            const nlohmann::json j = runScene("pull", 4.0,
-                                              "--set pull.angle=" + std::to_string(angle) + " --set pull.speed=" + speed +
-                                                  " --set cloth.resolution_x=" + r + " --set cloth.resolution_y=" + r,
-                                              1);
-            const Rip rip = ripOf(j);
-            const double spacing = 6.0 / (res - 1), restTriangle = 0.5 * spacing * spacing;
-            const std::string where = std::to_string(angle) + " deg, " + speed + " m/s";
-            EXPECT_GE(rip.tears, 5u) << where << ": the pull tears";
-            EXPECT_GT(rip.smallestPiece, 5 * restTriangle) << where << ": " << rip.pieces << " pieces";
-            double total = 0;
-            for (double a : j["pieces"]["areas"].get<std::vector<double>>()) total += a;
-            EXPECT_NEAR(total, 36.0, 1e-6) << where << ": no area lost";
-        }
+        for (const char* speed : {"0.4991", "0.5", "0.5005"})
+            expectPullLeavesNoScraps(angle, 80, std::string(" --set pull.speed=") + speed, 1,
+                                     std::to_string(angle) + " deg at 80, " + speed + " m/s, one thread");
 }

@@ -282,15 +282,15 @@ TEST(AppWindow, ReplayIsBitIdenticalRunToRun) {
     }
 }
 
-// Issue 13 goal 2, no confetti, as a user drags: the README's drag (assets/screenshots/drag.txt, the
-// script its pictures are made with: down and sideways, held) at 40 and 80 a side tears the curtain,
-// and every piece it leaves is at least five rest triangles of its mesh (a one-point split keeps
-// smaller ones on: minLooseArea, cloth.h, 5.2 rest triangles of a grid). At 40 a tear front halving
-// the same corner again had set loose a 1.6 cm^2 sliver (1/8 of a rest triangle; minTearSplitRest,
-// cloth.h); at 40 and 80 the rip leaves the lower right part hanging
-// by the right edge. The rip leans the same way at both (issue 13 goal 1): 47 and 42 deg from
-// horizontal; 24 and 40 when the limit's passes under the hand were a fixed 12, not an eighth of the
-// cloth's depth (limit.cpp, passCap; bench/README.md, "The hand's passes by depth").
+// Issue 13 goal 2, no confetti, as a user drags: the README's drag (assets/screenshots/drag.txt,
+// the script its pictures are made with: down and sideways, held) at 40 and 80 a side tears the
+// curtain, and every piece it leaves is at least five rest triangles of its mesh (a one-point split
+// keeps smaller ones on: minLooseArea, cloth.h, 5.2 rest triangles of a grid). At 40 a tear front
+// halving the same corner again had set loose a 1.6 cm^2 sliver (1/8 of a rest triangle;
+// minTearSplitRest, cloth.h); at 40 and 80 the rip leaves the lower right part hanging by the right
+// edge. The rip leans the same way at both (issue 13 goal 1): 47 and 42 deg from horizontal; 24 and
+// 40 when the limit's passes under the hand were a fixed 12, not an eighth of the cloth's depth
+// (limit.cpp, passCap; bench/README.md, "The hand's passes by depth").
 TEST(AppWindow, ADragRipsWithoutScraps) {
     REQUIRE_XVFB();
     double axis[2] = {};
@@ -318,15 +318,16 @@ TEST(AppWindow, ADragRipsWithoutScraps) {
 // 50 frames, then held), each at 40 and 80 a side. No piece a drag leaves is smaller than 5 rest
 // triangles of its mesh, and no area is lost. The bound: a one-point split keeps on a fan of less
 // than minLooseArea (cloth.h, 2 squared mean rest lengths: 5.2 rest triangles of this grid; it was
-// 1.5, 3.9 triangles, and this bound 3.5). Most drags tear (a slow lift of the cloth does not, as it
-// should not: drag 5 lifts it 0.3 m), so the check is not vacuous. And a drag leaves as many pieces at 80 as at 40 (issue 13 goal 1): five tear the held
-// patch out (2 pieces), drag 5 none. Drags 0 and 2 yank the cloth off the bottom of the screen at
-// 25-29 px a frame; until the hand stopped on the ground (tools.cpp, dragBeforeStep) they pulled
-// the held patch through the floor and left 6 / 13 and 4 / 21 pieces at 40 / 80 (37 and 23 at 160).
-// Now they leave 2-4, but which of those moves with round-off: with gravity 1e-6 stronger (9.81001)
-// drag 0 leaves 2 / 3 pieces at 40 / 80 and drag 2 2 / 3, against 2 / 2 for both at 9.81, and
-// merging the bend-shear springs with the same ends (springs.cpp, a change of summation order only)
-// gave 2 / 4 and 3 / 2. Their pieces are not compared (the scrap bound and the area still are).
+// 1.5, 3.9 triangles, and this bound 3.5). Most drags tear (a slow lift of the cloth does not, as
+// it should not: drag 5 lifts it 0.3 m), so the check is not vacuous. And a drag leaves as many
+// pieces at 80 as at 40 (issue 13 goal 1): five tear the held patch out (2 pieces), drag 5 none.
+// Drags 0 and 2 yank the cloth off the bottom of the screen at 25-29 px a frame; until the hand
+// stopped on the ground (tools.cpp, dragBeforeStep) they pulled the held patch through the floor
+// and left 6 / 13 and 4 / 21 pieces at 40 / 80 (37 and 23 at 160). Now they leave 2-4, but which of
+// those moves with round-off: with gravity 1e-6 stronger (9.81001) drag 0 leaves 2 / 3 pieces at 40
+// / 80 and drag 2 2 / 3, against 2 / 2 for both at 9.81, and merging the bend-shear springs with
+// the same ends (springs.cpp, a change of summation order only) gave 2 / 4 and 3 / 2. Their pieces
+// are not compared (the scrap bound and the area still are).
 TEST(AppWindow, RandomDragsTearWithoutScraps) {
     REQUIRE_XVFB();
     std::mt19937 rng(2026);
