@@ -11,6 +11,8 @@
 # compare resolutions over several hand speeds a little apart, e.g. "0.4999 0.5 0.5001", not one run.
 # With more than one speed a summary per angle and resolution follows the runs: the median length and
 # axis, and how many runs left each number of pieces.
+# More options for the runner: EXTRA for every run, EXTRA_<res> for one resolution's runs, e.g.
+#   EXTRA_40="--set time.substeps=7" EXTRA_160="--set tear.weak_threshold=0.2" sh bench/gestures/pull_rips.sh ...
 set -eu
 BIN=${1:-build/release/src/app/clothtear}
 ANGLES=${2:-0 30 60 90}
@@ -18,16 +20,20 @@ RES=${3:-40 80 160}
 SPEEDS=${4:-0.5}
 SECONDS_RUN=${5:-4}
 ROWS=$(mktemp)
-trap 'rm -f "$ROWS"' EXIT
+RUN=$(mktemp)
+trap 'rm -f "$ROWS" "$RUN"' EXIT
 echo "angle   res  speed  tears  first (s)  axis (deg)  length (m)  pieces  smallest (m^2)"
 for a in $ANGLES; do
     for n in $RES; do
       for v in $SPEEDS; do
+        # shellcheck disable=SC2086 # the extra options are words
         "$BIN" --headless --scene pull --seconds "$SECONDS_RUN" --set pull.angle="$a" --set pull.speed="$v" \
-            --set cloth.resolution_x="$n" --set cloth.resolution_y="$n" --json - | python3 -c '
+            --set cloth.resolution_x="$n" --set cloth.resolution_y="$n" ${EXTRA:-} $(eval "echo \${EXTRA_$n:-}") \
+            --json "$RUN" >/dev/null || { echo "pull_rips.sh: the run at $a deg, $n a side, $v m/s failed (above)" >&2; exit 1; }
+        python3 -c '
 import json, math, sys
 a, n, v = sys.argv[1], sys.argv[2], sys.argv[3]
-r = json.load(sys.stdin)
+r = json.load(open(sys.argv[4]))
 ev = r["tear_events"]
 pieces = r["pieces"]
 if not ev:
@@ -40,7 +46,7 @@ th = 0.5 * math.atan2(2 * sxy, sxx - syy)
 p = [(x - mx) * math.cos(th) + (y - my) * math.sin(th) for x, y in zip(xs, ys)]
 first, count, smallest = ev[0]["time"], pieces["count"], pieces["smallest_area"]
 print(f"{a:>5} {n:>5} {v:>6} {len(ev):6d} {first:10.2f} {math.degrees(th):11.1f} {max(p) - min(p):11.2f} {count:7d} {smallest:15.3f}")
-' "$a" "$n" "$v" | tee -a "$ROWS"
+' "$a" "$n" "$v" "$RUN" | tee -a "$ROWS"
       done
     done
 done
