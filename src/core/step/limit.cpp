@@ -201,15 +201,15 @@ private:
     // the limit and counts the corrections each particle gets (into buffer c). Sweep 2 (correctPass)
     // adds the corrections, each spring's divided by the larger total count of its ends (over all
     // `nc` count buffers).
-    int countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched);
-    void correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, int nc);
+    int countPass(SpringList& list, Corr* c, std::vector<Index>& touched);
+    void correctPass(const SpringList& list, Corr* c, Corr* cv, int nc);
     // A Gauss-Seidel pass: each listed spring over the limit is corrected in place, in list order
     // or backwards (symmetric Gauss-Seidel: a pull travels the whole list in one pass either way);
     // the particles it moves go on `moved` (stamped).
-    int gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32_t stamp, std::vector<Index>& moved);
+    int gaussSeidelPass(SpringList& list, bool backwards, uint32_t stamp, std::vector<Index>& moved);
     // Lists the springs of the particles in `moved` that a pass pushed over the limit. A spring
     // whose two ends both moved is listed from its lower-numbered end only.
-    void expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list);
+    void expand(const std::vector<Index>& moved, uint32_t stamp, SpringList& list);
     bool prefilterPays(size_t totalMoved) const;
     size_t countMaybeOver(int t, int nt) const;
 
@@ -270,7 +270,7 @@ void LimitSolve::scan(int t, int nt) {
     const SpringArrays arrays = springArraysOf(S);
     // The scan flags springs over the limit and those over a tear threshold (which may be lower).
     const float scanRatio = std::min(ctx_.limiting ? doneRatio_ : 1e30f, minTearRatio_);
-    std::vector<Index>& list = T_.active[t];
+    SpringList& list = T_.active[t];
     std::vector<TearCandidate>& found = T_.found[t];
     const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
     // Read only where the tethers pull (pullTethers).
@@ -406,7 +406,7 @@ size_t LimitSolve::countMaybeOver(int t, int nt) const {
     return count;
 }
 
-int LimitSolve::countPass(std::vector<Index>& list, Corr* c, std::vector<Index>& touched) {
+int LimitSolve::countPass(SpringList& list, Corr* c, std::vector<Index>& touched) {
     int corrected = 0;
     size_t keep = 0;
     for (Index i : list) {
@@ -423,7 +423,7 @@ int LimitSolve::countPass(std::vector<Index>& list, Corr* c, std::vector<Index>&
     return corrected;
 }
 
-void LimitSolve::correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, int nc) {
+void LimitSolve::correctPass(const SpringList& list, Corr* c, Corr* cv, int nc) {
     auto& corr = T_.corr;
     for (Index i : list) {
         const Spring& s = springs_[i];
@@ -441,7 +441,7 @@ void LimitSolve::correctPass(const std::vector<Index>& list, Corr* c, Corr* cv, 
     }
 }
 
-int LimitSolve::gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32_t stamp, std::vector<Index>& moved) {
+int LimitSolve::gaussSeidelPass(SpringList& list, bool backwards, uint32_t stamp, std::vector<Index>& moved) {
     int corrected = 0;
     const size_t count = list.size();
     for (size_t j = 0; j < count; ++j) {
@@ -472,7 +472,7 @@ int LimitSolve::gaussSeidelPass(std::vector<Index>& list, bool backwards, uint32
     return corrected;
 }
 
-void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::vector<Index>& list) {
+void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringList& list) {
     // overLimit, from the particle-spring table's other end and rest length: the spring itself is
     // not read (|x_q - x_p|^2 is |x_b - x_a|^2 to the bit).
     // Members in locals: the byte stores into `listed` may alias anything, and the compiler
@@ -489,8 +489,8 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, std::ve
     // of p is written past the list's end and the count moves on by the ones taken. Within one
     // call no spring is taken from both ends (`fromOtherEnd`), so `listed` reads here as it read
     // with a branch on each test in turn.
-    // Room for every spring of every moved particle, made once (a resize per particle zero-filled
-    // its room and checked the capacity each time).
+    // Room for every spring of every moved particle, made once (a resize per particle checked the
+    // capacity each time), and not zero-filled (SpringList): only what is taken is read.
     size_t n = list.size(), room = 0;
     for (Index p : moved) room += start[p + 1] - start[p];
     list.resize(n + room);
@@ -520,7 +520,7 @@ void LimitSolve::passes(int t, int nt) {
     auto& corrV = T_.corrV;
     auto& touched = T_.touched;
     auto& moved = T_.moved;
-    std::vector<Index>& list = active[t];
+    SpringList& list = active[t];
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     if (gaussSeidel_ && nt > 1) {
         // One list: the threads' lists in thread order.

@@ -1,5 +1,6 @@
 // Springs in groups of eight (spring_groups.h): finding the groups, and their kernels.
 #include "spring_groups.h"
+#include "uninitialized_vector.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,13 +55,14 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
     std::vector<uint8_t> grouped(count, 0);
     // Each spring's first end (the lower index) and the distance of its ends' indices, once: the
     // sorts below read them in their own orders, and through the springs that was a cache miss each.
-    std::vector<uint32_t> first(count), dist(count);
+    // Arrays written in full before they are read are not zero-filled first (UninitializedVector).
+    UninitializedVector<uint32_t> first(count), dist(count);
     for (size_t i = 0; i < count; ++i) {
         first[i] = std::min(springs[i].a, springs[i].b);
         dist[i] = std::max(springs[i].a, springs[i].b) - first[i];
     }
     auto lo = [&](size_t i) { return first[i]; };
-    std::vector<uint32_t> byDistance;
+    UninitializedVector<uint32_t> byDistance;
     struct Found {
         uint32_t first; // its springs: byDistance[first + j]
         SpringGroup group;
@@ -72,16 +74,17 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
         // of their edges, two rows interleaved, and each of them twice (two edges whose opposite
         // corners are the same two particles). So a spring's copy number among the springs with the
         // same ends comes between: distance, copy, first end, and each copy runs along the cloth.
-        auto countingSort = [&](const std::vector<uint32_t>& in, size_t range, auto key) {
-            std::vector<uint32_t> start(range + 1, 0), out(in.size());
+        auto countingSort = [&](const UninitializedVector<uint32_t>& in, size_t range, auto key) {
+            std::vector<uint32_t> start(range + 1, 0);
+            UninitializedVector<uint32_t> out(in.size());
             for (uint32_t i : in) ++start[key(i) + 1];
             for (size_t d = 1; d <= range; ++d) start[d] += start[d - 1];
             for (uint32_t i : in) out[start[key(i)]++] = i;
             return out;
         };
-        std::vector<uint32_t> all(count);
+        UninitializedVector<uint32_t> all(count);
         for (size_t i = 0; i < count; ++i) all[i] = uint32_t(i);
-        const std::vector<uint32_t> byFirst = countingSort(all, particles, lo);
+        const UninitializedVector<uint32_t> byFirst = countingSort(all, particles, lo);
         // A spring's copy number: how many springs before it (by index) have the same two ends,
         // capped at particles - 1. The springs of one first end are a particle's few: count within
         // its run of byFirst, which holds them by index.
@@ -150,8 +153,8 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
     for (const Found& f : found) ++groupAt[bandOf(f.group.a) + 1];
     for (Index i : rest) ++restAt[bandOf(lo(i)) + 1];
     for (size_t b = 1; b <= bands; ++b) groupAt[b] += groupAt[b - 1], restAt[b] += restAt[b - 1];
-    std::vector<uint32_t> groupOrder(found.size());
-    std::vector<Index> restOrder(rest.size());
+    UninitializedVector<uint32_t> groupOrder(found.size());
+    UninitializedVector<Index> restOrder(rest.size());
     {
         std::vector<uint32_t> g(groupAt.begin(), groupAt.end() - 1), r(restAt.begin(), restAt.end() - 1);
         for (size_t k = 0; k < found.size(); ++k) groupOrder[g[bandOf(found[k].group.a)]++] = uint32_t(k);

@@ -6,6 +6,7 @@
 #include "phases.h"
 #include "spring_caps.h"
 #include "spring_groups.h"
+#include "uninitialized_vector.h"
 
 #include "clothtear/kes.h"
 
@@ -99,7 +100,9 @@ bool mergeAllowed() { return envSwitchOn("CLOTHTEAR_MERGE_SPRINGS"); }
 MergedSprings mergeSameSprings(const std::vector<Spring>& springs, size_t count, size_t particles, bool merge) {
     // The springs of one first end (the smaller index) are a particle's few: look for a copy among
     // those before it there (a counting sort by first end, stable, so in index order).
-    std::vector<uint32_t> firstStart(particles + 1, 0), byFirst(count);
+    // Arrays written before they are read are not zero-filled first (UninitializedVector).
+    std::vector<uint32_t> firstStart(particles + 1, 0);
+    UninitializedVector<uint32_t> byFirst(count);
     auto first = [&](size_t i) { return std::min(springs[i].a, springs[i].b); };
     auto second = [&](size_t i) { return std::max(springs[i].a, springs[i].b); };
     for (size_t i = 0; i < count; ++i) ++firstStart[first(i) + 1];
@@ -108,7 +111,7 @@ MergedSprings mergeSameSprings(const std::vector<Spring>& springs, size_t count,
         std::vector<uint32_t> at(firstStart.begin(), firstStart.end() - 1);
         for (size_t i = 0; i < count; ++i) byFirst[at[first(i)]++] = uint32_t(i);
     }
-    std::vector<uint32_t> leader(count); // the first spring of i's copies
+    UninitializedVector<uint32_t> leader(count); // the first spring of i's copies
     for (size_t p = 0; p < particles; ++p)
         for (uint32_t k = firstStart[p]; k < firstStart[p + 1]; ++k) {
             const uint32_t i = byFirst[k];
@@ -122,7 +125,7 @@ MergedSprings mergeSameSprings(const std::vector<Spring>& springs, size_t count,
             }
         }
     MergedSprings out;
-    std::vector<uint32_t> unique(count); // per leader: its entry in out.springs
+    UninitializedVector<uint32_t> unique(count); // per leader: its entry in out.springs (read only there)
     for (size_t i = 0; i < count; ++i)
         if (leader[i] == i) {
             unique[i] = uint32_t(out.springs.size());

@@ -7,6 +7,7 @@
 #include "clothtear/world.h"
 #include "revisions.h"
 #include "spring_groups.h"
+#include "uninitialized_vector.h"
 
 #include <array>
 #include <memory>
@@ -23,6 +24,9 @@ struct BallContact {
     int8_t side;
     std::array<Vec3, 3> at;
 };
+
+// Springs the limit works on (its lists), grown by expand without zero-filling.
+using SpringList = UninitializedVector<Index>;
 
 // A particle as the spring kernels read it (kernels.h): position and velocity, each xyz and a zero
 // fourth lane; two to a cache line.
@@ -182,7 +186,7 @@ struct ThreadBuffers {
     bool groupForcesSet = false;
     std::vector<std::vector<Eigen::Vector4f>> corr; // limit corrections (xyz, count), zero between passes
     std::vector<std::vector<Eigen::Vector4f>> corrV; // limit velocity changes (xyz)
-    std::vector<std::vector<Index>> active;         // springs the limit still works on
+    std::vector<SpringList> active;                 // springs the limit still works on
     std::vector<std::vector<Index>> touched;        // particles with a correction this pass
     std::vector<std::vector<Index>> moved;          // particles the last Jacobi pass moved
     std::vector<std::vector<TearCandidate>> found;  // tear candidates of the scan
