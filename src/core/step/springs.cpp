@@ -213,26 +213,19 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
         const Index u = bendOrder.order[e - ns];
         return Copies{merged.copies.data() + merged.start[u], merged.copies.data() + merged.start[u + 1]};
     };
-    // The stiffness and damping the material asks of entry e, summed over its copies (in the order
-    // fill sums the capped ones, so that an entry the guard left alone compares equal).
-    auto asked = [&](size_t e) {
-        const bool structural = e < ns;
-        const float ks = structural ? float(stretchAsked.stiffness) : m.bendStiffness;
-        const float kds = structural ? float(stretchAsked.damping) : m.bendDamping;
-        const std::vector<Spring>& springs = structural ? cloth.springs : cloth.bends;
-        float k = 0.f, kd = 0.f;
-        const Copies c = copiesOf(e);
-        for (const Index* i = c.begin; i != c.end; ++i) k += ks * springs[*i].weight, kd += kds * springs[*i].weight;
-        return std::array<float, 2>{k, kd};
-    };
+    // The stiffness and damping the material asks of each entry, summed over its copies in the order
+    // fill sums the capped ones (so that an entry the guard left alone compares equal); fill writes
+    // them as it goes, for the guard's figures below.
+    UninitializedVector<float> askedK(ns + nb), askedKd(ns + nb);
     auto fill = [&](const std::vector<Spring>& springs, size_t e0, size_t e1, float ks, float kds) {
         for (size_t e = e0; e < e1; ++e) {
             const Copies c = copiesOf(e);
             const Spring& s = springs[*c.begin];
-            float k = 0.f, damping = 0.f;
+            float k = 0.f, damping = 0.f, kAsked = 0.f, kdAsked = 0.f;
             for (const Index* i = c.begin; i != c.end; ++i) {
                 const Spring& copy = springs[*i];
                 float kc = ks * copy.weight, dc = kds * copy.weight;
+                kAsked += kc, kdAsked += dc;
                 if (ctx.perSpringCaps) {
                     const float w = cloth.invMass[copy.a] + cloth.invMass[copy.b];
                     if (kc * w > kCap) kc = kCap / w;
@@ -246,6 +239,8 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
             S.rest[e] = s.rest;
             S.k[e] = k;
             S.kd[e] = damping;
+            askedK[e] = kAsked;
+            askedKd[e] = kdAsked;
         }
     };
     fill(cloth.springs, 0, ns, float(stretchAsked.stiffness), float(stretchAsked.damping));
@@ -256,18 +251,18 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     float stiffnessKept = 1.f, dampingKept = 1.f;
     if (guard)
         for (size_t e = 0; e < ns + nb; ++e) {
-            const auto [askedK, askedKd] = asked(e);
+            const float wantK = askedK[e], wantKd = askedKd[e];
             // An entry the guard left as asked (fill computed the same sum) has a ratio of 1 or
             // more, which lowers neither minimum: no division for it (they were a chain of 100 k
             // divisions, a sixth of the rebuild after a tear at 128 x 128).
-            const bool softer = S.k[e] < askedK, softerDamping = S.kd[e] < askedKd;
+            const bool softer = S.k[e] < wantK, softerDamping = S.kd[e] < wantKd;
             if (!softer && !softerDamping) continue;
-            if (S.k[e] < askedK * (1.f - 1e-6f) || S.kd[e] < askedKd * (1.f - 1e-6f)) {
+            if (S.k[e] < wantK * (1.f - 1e-6f) || S.kd[e] < wantKd * (1.f - 1e-6f)) {
                 const Copies c = copiesOf(e);
                 capped += size_t(c.end - c.begin);
             }
-            if (softer && askedK > 0.f) stiffnessKept = std::min(stiffnessKept, S.k[e] / askedK);
-            if (softerDamping && askedKd > 0.f) dampingKept = std::min(dampingKept, S.kd[e] / askedKd);
+            if (softer && wantK > 0.f) stiffnessKept = std::min(stiffnessKept, S.k[e] / wantK);
+            if (softerDamping && wantKd > 0.f) dampingKept = std::min(dampingKept, S.kd[e] / wantKd);
         }
     // The cloth's springs whose forces the groups compute (a merged entry stands for its copies).
     S.groupedSprings = 0;
