@@ -11,47 +11,65 @@ namespace {
 // depth in springs of the farthest one. Particles with invMass 0 get no tether (nothing moves them).
 uint32_t breadthFirst(const Cloth& cloth, const LimitCache& t, const std::vector<Index>& sources, TetherSet& set) {
     const size_t n = cloth.particleCount();
-    std::vector<Index> anchorOf(n, kNone);
+    // The layer of each particle reached (~0u: not yet) and its anchor, in one place: the search
+    // reads both of a neighbour together.
+    struct Reach {
+        uint32_t layer;
+        Index anchor;
+    };
+    std::vector<Reach> reach(n, Reach{~0u, kNone});
     set.length.assign(n, 0.f);
     set.parent.assign(n, kNone);
     set.cut.assign(n, 0);
-    set.order.clear();
-    set.order.reserve(sources.empty() ? 0 : n);
-    std::vector<uint32_t> layer(n, ~0u);
+    // The queue is the order itself, written through a pointer: no particle enters twice, so n
+    // entries hold it. Members in locals: the stores into the per-particle arrays may alias the
+    // table's and the vectors' own words, and the compiler reloaded them after each store.
+    set.order.resize(sources.empty() ? 0 : n);
+    Index* order = set.order.data();
+    float* length = set.length.data();
+    Index* parent = set.parent.data();
+    Reach* r = reach.data();
+    const uint32_t* start = t.springStart.data();
+    const LimitCache::SpringEnd* ends = t.ends.data();
+    size_t queued = 0;
     for (Index p : sources) {
-        anchorOf[p] = p;
-        layer[p] = 0;
-        set.order.push_back(p);
+        r[p] = Reach{0, p};
+        order[queued++] = p;
     }
     uint32_t deepest = 0;
     size_t begin = 0;
-    for (uint32_t depth = 0; begin < set.order.size(); ++depth) {
-        const size_t end = set.order.size();
+    for (uint32_t depth = 0; begin < queued; ++depth) {
+        const size_t end = queued;
+        const uint32_t next = depth + 1;
         for (size_t i = begin; i < end; ++i) {
-            const Index p = set.order[i];
+            const Index p = order[i];
+            const float lp = length[p];
+            const Index ap = r[p].anchor;
             // The particle-spring table's own copies of the other end and the rest length: read in
-            // row order, not through the spring.
-            for (uint32_t k = t.springStart[p]; k < t.springStart[p + 1]; ++k) {
-                const Index o = t.ends[k].other;
-                const float len = set.length[p] + t.ends[k].rest;
-                if (layer[o] == ~0u) {
-                    layer[o] = depth + 1;
-                    set.order.push_back(o);
-                } else if (layer[o] != depth + 1 || len >= set.length[o]) {
+            // row order, not through the spring. Within a layer a particle keeps the shortest of
+            // the paths that reach it (the first of equal ones).
+            for (uint32_t k = start[p], k1 = start[p + 1]; k < k1; ++k) {
+                const Index o = ends[k].other;
+                const float len = lp + ends[k].rest;
+                if (r[o].layer == ~0u) {
+                    r[o].layer = next;
+                    order[queued++] = o;
+                } else if (r[o].layer != next || len >= length[o]) {
                     continue;
                 }
-                anchorOf[o] = anchorOf[p];
-                set.length[o] = len;
-                set.parent[o] = p;
+                r[o].anchor = ap;
+                length[o] = len;
+                parent[o] = p;
             }
         }
         begin = end;
-        if (begin < set.order.size()) deepest = depth + 1;
+        if (begin < queued) deepest = next;
     }
+    set.order.resize(queued);
     // The particles a tether pulls: reached, and free (pinned ones never move).
     set.tether.assign(n, kNone);
     for (Index p = 0; p < n; ++p)
-        if (anchorOf[p] != kNone && anchorOf[p] != p && cloth.invMass[p] != 0.f) set.tether[p] = anchorOf[p];
+        if (r[p].anchor != kNone && r[p].anchor != p && cloth.invMass[p] != 0.f) set.tether[p] = r[p].anchor;
     return deepest;
 }
 
