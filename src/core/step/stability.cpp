@@ -92,19 +92,27 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
     springSumsPerParticle(cloth, settings, k, kd);
     std::vector<double> springStep(n, std::numeric_limits<double>::infinity());
     if (bound == StepBound::SpringCaps) {
+        // A particle's step is the shortest of its springs', sqrt(cap / kw) and capD / kdw; both
+        // fall as kw and kdw grow and rounding keeps that order, so it is the step of its largest
+        // kw and largest kdw: one square root and two divisions a particle, not a spring.
+        std::vector<double> kwMax(n, 0.0), kdwMax(n, 0.0);
         auto add = [&](const std::vector<Spring>& springs, double ks, double kds) {
             for (const Spring& s : springs) {
                 const double w = double(cloth.invMass[s.a]) + double(cloth.invMass[s.b]);
                 const double kw = ks * s.weight * w, kdw = kds * s.weight * w;
-                double step = std::numeric_limits<double>::infinity();
-                if (kw > 0) step = std::sqrt(double(kStiffnessCap) / kw);
-                if (kdw > 0) step = std::min(step, double(kDampingCap) / kdw);
-                for (Index p : {s.a, s.b}) springStep[p] = std::min(springStep[p], step);
+                for (Index p : {s.a, s.b}) {
+                    kwMax[p] = std::max(kwMax[p], kw);
+                    kdwMax[p] = std::max(kdwMax[p], kdw);
+                }
             }
         };
         const AskedStiffness asked = structuralAsked(settings);
         add(cloth.springs, asked.stiffness, asked.damping);
         if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
+        for (Index p = 0; p < n; ++p) {
+            if (kwMax[p] > 0) springStep[p] = std::sqrt(double(kStiffnessCap) / kwMax[p]);
+            if (kdwMax[p] > 0) springStep[p] = std::min(springStep[p], double(kDampingCap) / kdwMax[p]);
+        }
     }
     // The guard's budget and the air drag's share of it (guardParticleBudget counts it too).
     const bool budgeted = bound == StepBound::Budget;
