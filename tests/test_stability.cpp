@@ -95,6 +95,41 @@ TEST(Stability, GuardPicksTheSubstepsTheEstimateNeeds) {
     EXPECT_EQ(w.guardSubsteps(), 10);
 }
 
+// The guard's step skips the lightest particles by mass, however many they are by count: a third of
+// the particles made 10^4 times lighter (each needs a 100 x shorter step; together 0.003 % of the
+// mass) leave the step of the rest. The estimate orders only the shortest steps, a few per cent of
+// the particles at first, and takes more when their mass is not enough: here it must look past
+// 1,365 light ones. With no light mass allowed it is their step.
+TEST(Stability, GuardStepSkipsLightParticlesHoweverMany) {
+    World w;
+    ASSERT_EQ(loadScene(w, "curtain", std::vector<std::string>{"cloth.resolution_x=64", "cloth.resolution_y=64"}), "");
+    const double heavy = guardStepEstimate(w.cloth, w.settings, kGuardLightMass);
+    size_t light = 0;
+    double lightMass = 0, mass = 0;
+    for (Index p = 0; p < w.cloth.particleCount(); ++p) {
+        if (w.cloth.invMass[p] == 0.f) continue;
+        if (p % 3 == 0) {
+            w.cloth.invMass[p] *= 1e4f;
+            ++light;
+            lightMass += 1.0 / w.cloth.invMass[p];
+        }
+        mass += 1.0 / w.cloth.invMass[p];
+    }
+    ASSERT_GT(light, 1300u);
+    ASSERT_LT(lightMass, 1e-3 * mass);
+    // The heavy particles' springs and masses are as before; the quantile of their steps is too,
+    // unless the mass taken out moves it across a change of step: checked with two fractions.
+    EXPECT_EQ(guardStepEstimate(w.cloth, w.settings, kGuardLightMass), heavy);
+    World uniform;
+    ASSERT_EQ(loadScene(uniform, "curtain", std::vector<std::string>{"cloth.resolution_x=64", "cloth.resolution_y=64"}), "");
+    EXPECT_EQ(guardStepEstimate(w.cloth, w.settings, 0.2), guardStepEstimate(uniform.cloth, uniform.settings, 0.2));
+    // No light mass allowed: the lightest particles' step, between 10^2 (stiffness: dt^2 w) and 10^4
+    // (damping: dt w) times shorter.
+    const double lightest = guardStepEstimate(w.cloth, w.settings, 0.0);
+    EXPECT_LT(lightest, heavy / 99);
+    EXPECT_GT(lightest, heavy / 1.0001e4);
+}
+
 // The guard's caps seen in the period of an oscillator: a triangle with A = (-1, 0) and B = (1, 0)
 // pinned and C = (0, 1) free (no gravity, air or damping), C displaced by 1 mm. C swings on the two
 // springs AC and BC: u'' = -omega^2 u with omega^2 = 2 k (h / L)^2 / m = k w with w = 1/m_C,
