@@ -96,8 +96,8 @@ TEST(Stability, GuardPicksTheSubstepsTheEstimateNeeds) {
 }
 
 // The guard's step skips the lightest particles by mass, however many they are by count: a third of
-// the particles made 10^4 times lighter (each needs a 100 x shorter step; together 0.003 % of the
-// mass) leave the step of the rest. The estimate orders only the shortest steps, a few per cent of
+// the particles made 10^4 times lighter (each needs a step 10^2-10^4 x shorter; together 0.003 % of
+// the mass) leave the step of the rest. The estimate orders only the shortest steps, a few per cent of
 // the particles at first, and takes more when their mass is not enough: here it must look past
 // 1,365 light ones. With no light mass allowed it is their step.
 TEST(Stability, GuardStepSkipsLightParticlesHoweverMany) {

@@ -11,7 +11,6 @@
 #include "clothtear/kes.h"
 
 #include <algorithm>
-#include <array>
 #include <string>
 
 namespace clothtear {

@@ -156,7 +156,9 @@ double guardStepEstimate(const Cloth& cloth, const Settings& settings, double li
     if (steps.empty())
         return std::numeric_limits<double>::infinity();
     // The step every particle meets but the ones that need a shorter one and together hold at most
-    // lightMassFraction of the mass: walk up the shortest steps until their mass passes it.
+    // lightMassFraction of the mass: walk up the shortest steps until their mass passes it. (The
+    // total is summed in particle order; a full sort summed it in step order, which differs in the
+    // last bits, so the answer could differ only where the share's edge falls within that rounding.)
     double freeMass = 0;
     for (const auto& sm : steps)
         freeMass += sm.second;
