@@ -101,6 +101,8 @@ struct CollisionSettings {
     float thickness = 0.005f;  // m       cloth half-thickness kept between cloth and colliders
     float stretchBand = 0.05f; // m       fabric within this rest distance of a ball's contact may stretch
                                //         to the tear threshold, like the contact itself (limit.cpp)
+    float tearGauge = 0.125f;  // m       under a ball a spring tears at the stretch past the limit a strip
+                               //         this long holds at the tear threshold, however short it is
     float ballDensity = 200.f; // kg/m^3, informational default for the ball tool
     bool broadPhase = true;    //         ball phases test only the triangles of particles near each ball
 };

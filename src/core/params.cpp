@@ -79,6 +79,7 @@ const ParamInfo kParams[] = {
     CT_F("collision.ground_height", collision.groundHeight, -20, 20, -1000, 1000, "m", "Height of the ground plane", false),
     CT_F("collision.friction", collision.friction, 0, 1, 0, 10, "", "Coulomb friction between cloth and colliders", false),
     CT_F("collision.thickness", collision.thickness, 0, 0.05, 0, 1, "m", "Gap kept between cloth and colliders", false),
+    CT_F("collision.tear_gauge", collision.tearGauge, 0, 0.5, 0, 100, "m", "Under a ball a spring tears (and the limit holds it until then) once it is stretched past the limit by what a strip of fabric this long holds at the tear threshold: a ball tears by metres of stretch, not by the strain of the one ring of springs it pulls on, whose width is the mesh spacing", false),
     CT_F("collision.stretch_band", collision.stretchBand, 0, 0.5, 0, 100, "m", "Fabric within this distance (along the cloth, at rest) of a ball's contact may stretch to the tear threshold like the contact itself: a ball stretches the same band of fabric at every resolution (at least the contact's own springs)", false),
     CT_B("collision.broad_phase", collision.broadPhase, "Ball phases test only the triangles of particles near each ball (off: every triangle; the same result, slower: what the broad phase saves, bench/README.md)", false),
 

@@ -64,6 +64,8 @@ namespace {
 
 bool limitSkipsAllowed() { return envSwitchOn("CLOTHTEAR_LIMIT_SKIPS"); }
 
+float gaugeStrain(const LimitCache& C, const Cloth& cloth, Index s, float gauge);
+
 // Sub-steps the expand prefilter rests after it found springs over the limit (prefilterPays).
 constexpr uint32_t kPrefilterWait = 4;
 
@@ -73,8 +75,8 @@ constexpr size_t kSerialList = 2048;
 // Is a spring of rest length `rest` and squared length len2 over its limit by more than the
 // tolerance, given its ends' flags (or-ed)? Springs under a ball may stretch up to the tear
 // threshold: the ball, not the limit, decides where they are.
-inline bool exceedsLimit(uint8_t endFlags, float rest, float len2, float doneRatio, float heldDoneRatio) {
-    return len2 > sq(rest * ((endFlags & kTouched) ? heldDoneRatio : doneRatio));
+inline bool exceedsLimit(uint8_t endFlags, float rest, float len2, float doneRatio, const HeldLength& heldDone) {
+    return len2 > sq((endFlags & kTouched) ? heldDone(rest) : rest * doneRatio);
 }
 
 // Rebuilds the limit cache when the topology, the pinned particles or the drivers changed. Tether
@@ -148,19 +150,38 @@ private:
     bool overLimit(const Spring& s, float len2) const { return overLimit(flags_[s.a] | flags_[s.b], s.rest, len2); }
     // The same from the ends' flags (or-ed) and the rest length.
     bool overLimit(uint8_t endFlags, float rest, float len2) const {
-        return exceedsLimit(endFlags, rest, len2, doneRatio_, heldDoneRatio_);
+        return exceedsLimit(endFlags, rest, len2, doneRatio_, heldDone_);
     }
     // The ratio at which spring s tears (tearStrainFor): a hem first, then a weak end.
     float tearRatioOf(const Spring& s) const {
         const uint8_t f = flags_[s.a] | flags_[s.b];
-        return (f & kHem) ? ctx_.hemRatio : (f & (kWeak | kHinge)) ? ctx_.weakRatio : ctx_.tearRatio;
+        if (f & kHem) return ctx_.hemRatio;
+        if (f & (kWeak | kHinge)) return ctx_.weakRatio;
+        // By the gauge (tearsOverGauge): at the latest where the limit lets go of it.
+        return byGauge(f) ? held_(s.rest) / s.rest : ctx_.tearRatio;
     }
+    // Is a spring whose ends' flags (or-ed) are f, neither a hem's nor a tear's, torn by its gauge
+    // (tearsOverGauge)? Under a ball, and wherever the limit is a hard cap (no hand moves): a spring
+    // a ball held past the threshold is then pulled back, not torn, when the ball lets go of it
+    // (at 144 a side its contact flickered and ball-r2-v3 tore that way). Under a moving hand the
+    // threshold is the spring's own strain, as before (the drag and pull outcomes).
+    bool byGauge(uint8_t f) const { return ctx_.tearing && ((f & kTouched) || holdsOvershoot_); }
     // Did this sub-step's motion alone carry spring s from within the limit past its threshold (see
     // the top of this file)? Read only for springs over a threshold: a few per sub-step at most.
     // The limit is a hard cap here: no hand moves, no ball touches the spring, it touches no tear's
     // tip or hinge (the exceptions of issue 12 goal 5).
     bool hardCap(const Spring& s) const {
         return holdsOvershoot_ && !underBall(s) && !((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge));
+    }
+    // A spring shorter than the gauge and past the tear threshold tears (byGauge) when the mean
+    // strain of the straightest line of springs through it, collision.tear_gauge long (or as long
+    // as the cloth allows), reaches the threshold; it is held at most at the stretch of a gauge
+    // whose other springs are at the limit (heldLength), and tears there.
+    bool tearsOverGauge(const Spring& s, float len2) const {
+        const uint8_t f = flags_[s.a] | flags_[s.b];
+        if (!ctx_.limiting || !byGauge(f) || (f & (kHem | kWeak | kHinge)) || !(s.rest < ctx_.tearGauge)) return false;
+        if (len2 < sq(s.rest * ctx_.tearRatio)) return false;
+        return gaugeStrain(C_, cloth_, Index(&s - springs_), ctx_.tearGauge) >= ctx_.tearRatio - 1.f;
     }
     bool overshotFromWithinLimit(const Spring& s) const {
         if (!hardCap(s)) return false;
@@ -220,7 +241,8 @@ private:
     ThreadBuffers& T_;
     const CorrectionParams P_;
     const int iterations_;
-    const float doneRatio_, heldDoneRatio_, minTearRatio_, minTearSplitRest_;
+    const float doneRatio_, minTearRatio_, minTearSplitRest_;
+    const HeldLength held_, heldDone_; // under a ball: the length held (heldLength), and with the tolerance
     const bool useTethers_;
     const bool gaussSeidel_;
     const bool holdsOvershoot_; // the limit holds a spring's one-step overshoot (no driver moves)
@@ -250,8 +272,8 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
     : ctx_(ctx), cloth_(cloth), state_(state), C_(state.limit), T_(state.threads),
       P_{ctx.settings->limit.relaxation, ctx.dt, ctx.velocityFix},
       iterations_(passCap(ctx, cloth, state.limit, !state.contacts.empty())), doneRatio_(ctx.maxRatio * (1.f + kLimitTolerance)),
-      heldDoneRatio_(ctx.heldRatio * (1.f + kLimitTolerance)), minTearRatio_(std::min(ctx.tearRatio, ctx.weakRatio)),
-      minTearSplitRest_(minTearSplitRest(cloth)),
+      minTearRatio_(std::min(ctx.tearRatio, ctx.weakRatio)),
+      minTearSplitRest_(minTearSplitRest(cloth)), held_(heldLength(ctx, 1.f)), heldDone_(heldLength(ctx, 1.f + kLimitTolerance)),
       useTethers_(ctx.limiting),
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
       holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)), skipsAllowed_(limitSkipsAllowed()),
@@ -279,7 +301,7 @@ void LimitSolve::scan(int t, int nt) {
     tethersMayPull_[t] = scanSprings(arrays, sc.begin, sc.end, scanRatio, watchRatio, packed, [&](size_t e, float len2) {
         const Index i = S.index[e];
         const Spring& s = springs_[i];
-        if (len2 >= sq(s.rest * minTearRatio_) && len2 >= sq(s.rest * tearRatioOf(s))) {
+        if (len2 >= sq(s.rest * minTearRatio_) && (len2 >= sq(s.rest * tearRatioOf(s)) || tearsOverGauge(s, len2))) {
             if ((((flags_[s.a] | flags_[s.b]) & kHinge) && isFlapSpoke(cloth_, Index(i))) || overshotFromWithinLimit(s))
                 T_.held[t].push_back(Index(i));
             else {
@@ -398,7 +420,7 @@ bool LimitSolve::prefilterPays(size_t totalMoved) const {
 size_t LimitSolve::countMaybeOver(int t, int nt) const {
     const SpringCache& S = state_.springs;
     const SpringArrays arrays = springArraysOf(S);
-    const float bar = std::min(doneRatio_, heldDoneRatio_) * (1.f - kPrefilterMargin);
+    const float bar = std::min(doneRatio_, heldDone_.minRatio()) * (1.f - kPrefilterMargin);
     const Chunk sc = chunkOf(cloth_.springs.size(), t, nt);
     size_t count = 0;
     scanSprings(arrays, sc.begin, sc.end, bar, 0.f, state_.packed.data(),
@@ -436,7 +458,7 @@ void LimitSolve::correctPass(const SpringList& list, Corr* c, Corr* cv, int nc) 
             ca += corr[k][s.a].w();
             cb += corr[k][s.b].w();
         }
-        addCorrection(s, d, len2, s.rest * (underBall(s) ? ctx_.heldRatio : ctx_.maxRatio), std::max(ca, cb), invMass_,
+        addCorrection(s, d, len2, underBall(s) ? held_(s.rest) : s.rest * ctx_.maxRatio, std::max(ca, cb), invMass_,
                       v_, P_, c, cv);
     }
 }
@@ -455,7 +477,7 @@ int LimitSolve::gaussSeidelPass(SpringList& list, bool backwards, uint32_t stamp
         }
         const float wa = invMass_[s.a], wb = invMass_[s.b];
         if (wa + wb == 0.f || exempt(s, len2)) continue;
-        const float maxLen = s.rest * (underBall(s) ? ctx_.heldRatio : ctx_.maxRatio);
+        const float maxLen = underBall(s) ? held_(s.rest) : s.rest * ctx_.maxRatio;
         const LimitMove m = limitMove(s, d, len2, maxLen, 1.f, invMass_, v_, P_);
         x_[s.a] += wa * m.c;
         v_[s.a] += wa * m.dv;
@@ -483,7 +505,8 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringL
     const uint8_t* flags = flags_;
     const uint32_t* movedIn = movedIn_;
     uint8_t* listed = listed_;
-    const float done = doneRatio_, heldDone = heldDoneRatio_;
+    const float done = doneRatio_;
+    const HeldLength heldDone = heldDone_;
     // Without branches: whether a spring goes on the list is data (about half of those looked at
     // under a moving hand), and mispredicted branches were most of this loop's time. Every spring
     // of p is written past the list's end and the count moves on by the ones taken. Within one
@@ -648,6 +671,91 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
     for (Index q : band) cloth.flags[q] |= kTouched;
 }
 
+// Under a ball a spring shorter than collision.tear_gauge is held past the tear threshold, up to the
+// gauge's stretch (heldLength), and its tension stops growing at the threshold: the excess of its
+// elastic force, k x (length - rest x (1 + threshold)), is taken back from this sub-step's
+// integration (the kick and the move it gave both ends). The same stretch in metres then costs the
+// ball the same force and the same work at every spacing, as a strip of fabric a gauge long that has
+// reached its strength would (the crack band model of fracture, Bazant & Oh 1983: past the peak the
+// law is scaled by the element's size so that the energy a crack takes does not depend on the mesh).
+// Without it the one ring of springs held past the threshold pulled back by its strain, length /
+// spacing, and a finer cloth stopped the same ball sooner (the default throw at the 4 m curtain:
+// 5.5 m/s left at 128 a side against 6.2 at 64; bench/README.md).
+void capTensionUnderBall(const StepContext& ctx, Cloth& cloth, StepState& state) {
+    const SpringCache& S = state.springs;
+    const LimitCache& C = state.limit;
+    const float strength = ctx.heldRatio, gauge = ctx.tearGauge;
+    if (!ctx.limiting || state.contacts.empty() || S.kes || !(gauge > 0.f) || S.entryOf.size() != cloth.springs.size())
+        return;
+    const float dt = ctx.dt;
+    constexpr float kFar = std::numeric_limits<float>::infinity();
+    std::vector<float>& seen = state.bandDistance; // every entry +inf between uses (markStretchBand)
+    seen.resize(cloth.particleCount(), kFar);
+    auto repack = [&](Index r) {
+        PackedParticle& pk = state.packed[r];
+        for (int k = 0; k < 3; ++k) pk.x[k] = cloth.x[r][k], pk.v[k] = cloth.v[r][k];
+    };
+    std::vector<Index>& touched = state.bandQueue;
+    touched.clear();
+    for (const BallContact& c : state.contacts)
+        for (Index p : cloth.triangles[c.triangle].p)
+            if (seen[p] != 0.f) seen[p] = 0.f, touched.push_back(p);
+    for (Index p : state.stretchBand)
+        if (seen[p] != 0.f) seen[p] = 0.f, touched.push_back(p);
+    for (Index p : touched) {
+        for (uint32_t e = C.springStart[p]; e < C.springStart[p + 1]; ++e) {
+            const LimitCache::SpringEnd end = C.ends[e];
+            const Index q = end.other;
+            if (!(end.rest < gauge) || (seen[q] == 0.f && q < p)) continue; // each spring once
+            const Vec3 d = cloth.x[q] - cloth.x[p];
+            const float len = d.norm(), over = len - end.rest * strength;
+            if (!(over > 0.f)) continue;
+            const Vec3 kick = d * (S.k[S.entryOf[end.spring]] * over * dt / len); // impulse per unit 1/mass
+            const float wp = cloth.invMass[p], wq = cloth.invMass[q];
+            cloth.v[p] -= wp * kick, cloth.x[p] -= (wp * dt) * kick;
+            cloth.v[q] += wq * kick, cloth.x[q] += (wq * dt) * kick;
+            repack(p), repack(q);
+        }
+    }
+    for (Index p : touched) seen[p] = kFar;
+}
+
+// The mean strain of the straightest line of structural springs through spring s that is `gauge`
+// long at rest: from each end the spring whose rest direction continues s's most closely (within
+// 40 degrees), one side then the other, until the line is the gauge long or ends at a border or a
+// tear.
+float gaugeStrain(const LimitCache& C, const Cloth& cloth, Index s, float gauge) {
+    const Spring& sp = cloth.springs[s];
+    const Vec3d axis = (cloth.rest[sp.b] - cloth.rest[sp.a]).normalized();
+    double rest = sp.rest, len = (cloth.x[sp.b] - cloth.x[sp.a]).norm();
+    Index tip[2] = {sp.b, sp.a}, from[2] = {sp.a, sp.b};
+    bool open[2] = {true, true};
+    constexpr double kStraight = 0.766; // cos 40 deg: a grid's diagonal (45) does not continue a row
+    for (int side = 0; rest < gauge && (open[0] || open[1]); side ^= 1) {
+        if (!open[side]) continue;
+        const Index p = tip[side];
+        const Vec3d dir = side == 0 ? axis : Vec3d(-axis);
+        Index best = kNone;
+        double bestCos = kStraight;
+        float bestRest = 0.f;
+        for (uint32_t e = C.springStart[p]; e < C.springStart[p + 1]; ++e) {
+            const Index q = C.ends[e].other;
+            if (q == from[side]) continue;
+            const double c = (cloth.rest[q] - cloth.rest[p]).normalized().dot(dir);
+            if (c > bestCos) bestCos = c, best = q, bestRest = C.ends[e].rest;
+        }
+        if (best == kNone) {
+            open[side] = false;
+            continue;
+        }
+        rest += bestRest;
+        len += (cloth.x[best] - cloth.x[p]).norm();
+        from[side] = p;
+        tip[side] = best;
+    }
+    return float(len / rest - 1.0);
+}
+
 // Per-thread work arrays sized for this cloth and emptied for the sub-step.
 void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
     if (T.corr.size() != size_t(threads)) T.corr.resize(threads);
@@ -675,6 +783,7 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     prepareBuffers(state.threads, int(state.threads.acc.size()), cloth.particleCount());
     if (ctx.limiting) refreshLimitCache(ctx, cloth, state.limit);
     markStretchBand(ctx, cloth, state);
+    capTensionUnderBall(ctx, cloth, state);
     LimitSolve solve(ctx, cloth, state);
     solve.run();
     // The band lets go; the contacts' own particles keep their mark until the contact phase.

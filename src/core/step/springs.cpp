@@ -182,6 +182,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     for (auto* a : {&S.a16, &S.b16}) a->resize(ns + nb);
     S.index.resize(ns + nb);
     for (auto* a : {&S.rest, &S.k, &S.kd}) a->resize(ns + nb);
+    S.entryOf.resize(ns);
     S.structural = ns;
     // Each kind band by band: its groups of eight evenly spaced springs, then its other springs.
     S.groupKernel = kes ? GroupKernel::None : groupKernelInUse();
@@ -235,6 +236,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
             S.a16[e] = 16u * s.a;
             S.b16[e] = 16u * s.b;
             S.index[e] = *c.begin;
+            if (e < ns) S.entryOf[*c.begin] = uint32_t(e);
             S.rest[e] = s.rest;
             S.k[e] = k;
             S.kd[e] = damping;

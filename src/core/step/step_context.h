@@ -7,6 +7,7 @@
 #include "clothtear/world.h"
 #include "revisions.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace clothtear {
@@ -34,7 +35,9 @@ struct StepContext {
 
     // Length limit and tearing, as length ratios (1 + strain).
     float maxRatio = 1;   // 1 + limit.max_stretch
-    float heldRatio = 1;  // under a ball: up to the tear threshold (the ball decides, Onal 4.1)
+    float heldRatio = 1;  // under a ball: up to the tear threshold (the ball decides, Onal 4.1)...
+    float tearGauge = 0;  // m: ...for springs at least this long; a shorter one holds the same stretch
+                          // past the limit in metres (heldLength)
     float tearRatio = 1e30f; // 1 + tear.threshold (1e30 without tearing)
     float weakRatio = 1e30f; // springs touching a weak point or a one-point connection (tearStrainFor)
     float hemRatio = 1e30f;  // springs touching a hem (tearStrainFor)
@@ -55,6 +58,26 @@ struct StepContext {
     bool ballBroadPhase = true;
     Revisions revisions; // of the caches' inputs, this sub-step
 };
+
+// How long a spring under a ball may get (the limit holds it there, and it tears there):
+// rest x (1 + limit.max_stretch), plus the stretch past the limit that a strip of fabric
+// collision.tear_gauge long holds at the tear threshold, (threshold - max_stretch) x gauge, or x rest
+// for a spring longer than the gauge. What a ball stretches past the limit gathers in the ring of
+// springs between the held fabric and the contact, and that ring is one mesh spacing wide: a strain
+// threshold on it alone was a threshold on metres / spacing, so the thesis' big slow ball
+// (ball-r2-v3, Onal 4.1: the cloth slides over it) tore at 96 and 144 a side and not at 48
+// (bench/README.md, "A ball tears by metres of stretch, not by one ring's strain").
+struct HeldLength {
+    float limitRatio = 1;  // (1 + limit.max_stretch) x scale
+    float excessRatio = 0; // (heldRatio - limitRatio) x scale
+    float gauge = 0;       // m
+    float operator()(float rest) const { return limitRatio * rest + excessRatio * std::max(rest, gauge); }
+    // The smallest held ratio: a spring at least the gauge long.
+    float minRatio() const { return limitRatio + excessRatio; }
+};
+inline HeldLength heldLength(const StepContext& c, float scale) {
+    return HeldLength{c.maxRatio * scale, (c.heldRatio - c.maxRatio) * scale, c.tearGauge};
+}
 
 // Wind acts: on, with a speed and a drag coefficient (the wind phase runs; a cloth in wind never sleeps).
 bool windBlows(const Settings& settings);

@@ -49,6 +49,7 @@ struct SpringCache {
                                      // bend-shear entry's: its first copy's; springs.cpp)
     float maxRest = 0;               // m, longest structural rest length (ball broad phase)
     std::vector<float> rest, k, kd;  // m, N/m, N s/m
+    std::vector<uint32_t> entryOf;   // per structural spring: its entry (capTensionUnderBall reads its k)
     // material.model = kes: per structural entry, the width the tension per unit width acts on
     // (weight x rest: the adjacent rest area over the rest length), times what the guard kept of
     // the law's stiffness; k then holds the law's largest tangent (kesStrainRange) x weight, capped.
