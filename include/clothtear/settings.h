@@ -101,8 +101,6 @@ struct CollisionSettings {
     float thickness = 0.005f;  // m       cloth half-thickness kept between cloth and colliders
     float stretchBand = 0.05f; // m       fabric within this rest distance of a ball's contact may stretch
                                //         to the tear threshold, like the contact itself (limit.cpp)
-    float tearGauge = 0.125f;  // m       under a ball a spring tears at the stretch past the limit a strip
-                               //         this long holds at the tear threshold, however short it is
     float ballDensity = 200.f; // kg/m^3, informational default for the ball tool
     bool broadPhase = true;    //         ball phases test only the triangles of particles near each ball
 };
@@ -113,6 +111,8 @@ struct TearSettings {
     float weakThreshold = 0.2f;     // strain  lower threshold for springs touching a weak point
     float onePointThreshold = 0.2f; // strain  threshold for one-point connections
     float seamStrength = 3.f;       // x threshold  springs touching a hem (pinned edge) tear at this multiple
+    float gaugeLength = 0.125f;     // m       where no hand pulls, a shorter spring's strain is the mean strain
+                                    //         of a line of springs this long through it (limit.cpp)
     int32_t maxPerStep = 64;        // count   cap on tears per sub-step
     bool validate = false;          // run the full topology validation after every tear
 };

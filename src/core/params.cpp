@@ -79,8 +79,7 @@ const ParamInfo kParams[] = {
     CT_F("collision.ground_height", collision.groundHeight, -20, 20, -1000, 1000, "m", "Height of the ground plane", false),
     CT_F("collision.friction", collision.friction, 0, 1, 0, 10, "", "Coulomb friction between cloth and colliders", false),
     CT_F("collision.thickness", collision.thickness, 0, 0.05, 0, 1, "m", "Gap kept between cloth and colliders", false),
-    CT_F("collision.tear_gauge", collision.tearGauge, 0, 0.5, 0, 100, "m", "Under a ball a spring tears (and the limit holds it until then) once it is stretched past the limit by what a strip of fabric this long holds at the tear threshold: a ball tears by metres of stretch, not by the strain of the one ring of springs it pulls on, whose width is the mesh spacing", false),
-    CT_F("collision.stretch_band", collision.stretchBand, 0, 0.5, 0, 100, "m", "Fabric within this distance (along the cloth, at rest) of a ball's contact may stretch to the tear threshold like the contact itself: a ball stretches the same band of fabric at every resolution (at least the contact's own springs)", false),
+    CT_F("collision.stretch_band", collision.stretchBand, 0, 0.5, 0, 100, "m", "Fabric within this distance (along the cloth, at rest) of a ball's contact may stretch past the limit like the contact itself (to the tear threshold, over tear.gauge_length): a ball stretches the same band of fabric at every resolution (at least the contact's own springs)", false),
     CT_B("collision.broad_phase", collision.broadPhase, "Ball phases test only the triangles of particles near each ball (off: every triangle; the same result, slower: what the broad phase saves, bench/README.md)", false),
 
     CT_B("tear.enabled", tear.enabled, "Tearing (strain scan and topology changes)", false),
@@ -88,6 +87,7 @@ const ParamInfo kParams[] = {
     CT_F("tear.seam_strength", tear.seamStrength, 1, 10, 1, 100, "x threshold", "Springs touching a pinned edge (the hem) tear at this multiple of tear.threshold, before any weak point", false),
     CT_F("tear.weak_threshold", tear.weakThreshold, 0.02, 3, 0.001, 100, "", "Strain at which a spring touching a weak point tears", false),
     CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
+    CT_F("tear.gauge_length", tear.gaugeLength, 0, 0.5, 0, 100, "m", "Length of fabric a tear's strain is measured over where no hand pulls: a spring shorter than this tears when the mean strain of a line of springs this long through it reaches tear.threshold (under a ball it may stretch that far, its tension capped at the threshold's; a longer spring tears by its own strain), so a ball tears by metres of stretch, not by the strain of the one ring of springs it pulls on, whose width is the mesh spacing", false),
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
     CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
     CT_B("check.finite", check.finite, "Check for NaN/Inf after every phase of every sub-step; the report names the phase and particle (on in Debug builds)", false),

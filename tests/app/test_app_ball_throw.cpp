@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ struct Flight {
     int tears = 0;
     float startDistance = 0, endDistance = 0; // of the camera framing the world (V) before and after
     float endDistanceWithoutBall = 0;         // framing the same world with its ball taken out
+    float endDistanceLargestPiece = 0;        // ... and with only its largest piece of cloth
     float farPieceShare = 0; // largest share of the rest area in a piece centred 2 m or more from the largest piece
 };
 
@@ -66,6 +68,20 @@ Flight throwFromStartCamera(const std::string& scene, std::vector<std::string> s
     OrbitCamera without;
     frameWorld(without, noBall);
     f.endDistanceWithoutBall = without.distance;
+    {
+        World largest = noBall;
+        std::vector<Piece> pieces = findPieces(largest.cloth);
+        std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.restArea > b.restArea; });
+        // Deleting renumbers triangles: the smallest pieces first, each found again by its area rank.
+        while (pieces.size() > 1) {
+            largest.deletePiece(pieces.back().firstTriangle);
+            pieces = findPieces(largest.cloth);
+            std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.restArea > b.restArea; });
+        }
+        OrbitCamera only;
+        frameWorld(only, largest);
+        f.endDistanceLargestPiece = only.distance;
+    }
     // The pieces (connected islands): rest area and mean position.
     const std::vector<Index> label = pieceLabels(w.cloth);
     const size_t n = w.cloth.particleCount();
@@ -109,12 +125,13 @@ TEST(AppBallThrow, DefaultThrowFromTheStartCameraReachesAndNeverComesBack) {
         EXPECT_FALSE(f.cameBack) << what;
         EXPECT_LT(f.backSpeed, 1.f) << what << ": m/s back towards the camera";
         // V frames the cloth and its pieces, not the ball that flew on (issue 13: V zoomed far out), nor
-        // scraps: it zooms out by half again only for a piece of 5 % of the cloth or more lying 2 m away
-        // (the disc a ball punches out and carries to the ground, since the ball stretches a band of
-        // fabric: bench/README.md, "The fabric a ball stretches").
+        // scraps: beyond what the torn cloth's largest piece itself needs (a punched disc left hanging
+        // from the hole's rim by a strip: the 0.5 kg ball's curtain reaches 1.6 m below its hem), it
+        // zooms out by half again only for a piece of 5 % of the cloth or more lying 2 m away (the disc
+        // a ball punches out and carries to the ground: bench/README.md, "The fabric a ball stretches").
         EXPECT_NEAR(f.endDistance, f.endDistanceWithoutBall, 1e-3f * f.endDistanceWithoutBall) << what;
         if (f.farPieceShare < 0.05f) {
-            EXPECT_LT(f.endDistance, 1.5f * f.startDistance) << what;
+            EXPECT_LT(f.endDistance, 1.5f * std::max(f.startDistance, f.endDistanceLargestPiece)) << what;
         }
         std::printf("%s: %d tears, V at %.2f m (start %.2f), largest far piece %.1f %% of the cloth\n", what.c_str(),
                     f.tears, f.endDistance, f.startDistance, 100.f * f.farPieceShare);

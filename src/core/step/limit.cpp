@@ -174,7 +174,7 @@ private:
         return holdsOvershoot_ && !underBall(s) && !((flags_[s.a] | flags_[s.b]) & (kWeak | kHinge));
     }
     // A spring shorter than the gauge and past the tear threshold tears (byGauge) when the mean
-    // strain of the straightest line of springs through it, collision.tear_gauge long (or as long
+    // strain of the straightest line of springs through it, tear.gauge_length long (or as long
     // as the cloth allows), reaches the threshold; it is held at most at the stretch of a gauge
     // whose other springs are at the limit (heldLength), and tears there.
     bool tearsOverGauge(const Spring& s, float len2) const {
@@ -671,7 +671,7 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
     for (Index q : band) cloth.flags[q] |= kTouched;
 }
 
-// Under a ball a spring shorter than collision.tear_gauge is held past the tear threshold, up to the
+// Under a ball a spring shorter than tear.gauge_length is held past the tear threshold, up to the
 // gauge's stretch (heldLength), and its tension stops growing at the threshold: the excess of its
 // elastic force, k x (length - rest x (1 + threshold)), is taken back from this sub-step's
 // integration (the kick and the move it gave both ends). The same stretch in metres then costs the
@@ -710,7 +710,14 @@ void capTensionUnderBall(const StepContext& ctx, Cloth& cloth, StepState& state)
             const Vec3 d = cloth.x[q] - cloth.x[p];
             const float len = d.norm(), over = len - end.rest * strength;
             if (!(over > 0.f)) continue;
-            const Vec3 kick = d * (S.k[S.entryOf[end.spring]] * over * dt / len); // impulse per unit 1/mass
+            // The force was computed at the start of the sub-step (x - v dt): never take back more
+            // than it was. Taken from the length now alone, a spring the sub-step stretched from
+            // below the threshold got a push apart it had not been pulled by, and stretched further
+            // next time (ball-r2-v3 at 96 a side blew up with gravity at -9.8099).
+            const float startLen = ((cloth.x[q] - cloth.v[q] * dt) - (cloth.x[p] - cloth.v[p] * dt)).norm();
+            const float excess = std::min(over, startLen - end.rest * strength);
+            if (!(excess > 0.f)) continue;
+            const Vec3 kick = d * (S.k[S.entryOf[end.spring]] * excess * dt / len); // impulse per unit 1/mass
             const float wp = cloth.invMass[p], wq = cloth.invMass[q];
             cloth.v[p] -= wp * kick, cloth.x[p] -= (wp * dt) * kick;
             cloth.v[q] += wq * kick, cloth.x[q] += (wq * dt) * kick;

@@ -55,7 +55,7 @@ StepContext makeStepContext(World& w, StepState& state, float dt) {
     c.weakRatio = c.tearing ? 1.f + tearStrainFor(S.tear, true) : 1e30f;
     c.hemRatio = c.tearing ? 1.f + tearStrainFor(S.tear, false, true) : 1e30f;
     c.heldRatio = std::max(c.maxRatio, 1.f + S.tear.threshold);
-    c.tearGauge = c.tearing ? S.collision.tearGauge : 0.f; // without tearing a ball stretches to the threshold only
+    c.tearGauge = c.tearing ? S.tear.gaugeLength : 0.f; // without tearing a ball stretches to the threshold only
     c.velocityFix = S.time.integrator != Integrator::Verlet;
 
     c.dragPerMass = guardDragPerMass(S, w.cloth.density, dt);

@@ -61,7 +61,7 @@ struct StepContext {
 
 // How long a spring under a ball may get (the limit holds it there, and it tears there):
 // rest x (1 + limit.max_stretch), plus the stretch past the limit that a strip of fabric
-// collision.tear_gauge long holds at the tear threshold, (threshold - max_stretch) x gauge, or x rest
+// tear.gauge_length long holds at the tear threshold, (threshold - max_stretch) x gauge, or x rest
 // for a spring longer than the gauge. What a ball stretches past the limit gathers in the ring of
 // springs between the held fabric and the contact, and that ring is one mesh spacing wide: a strain
 // threshold on it alone was a threshold on metres / spacing, so the thesis' big slow ball
