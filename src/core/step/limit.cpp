@@ -678,9 +678,9 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
 // ball the same force and the same work at every spacing, as a strip of fabric a gauge long that has
 // reached its strength would (the crack band model of fracture, Bazant & Oh 1983: past the peak the
 // law is scaled by the element's size so that the energy a crack takes does not depend on the mesh).
-// Without it the one ring of springs held past the threshold pulled back by its strain, length /
-// spacing, and a finer cloth stopped the same ball sooner (the default throw at the 4 m curtain:
-// 5.5 m/s left at 128 a side against 6.2 at 64; bench/README.md).
+// Without it the one ring of springs held past the threshold pulls back by its strain, length /
+// spacing, and a finer cloth stops the same ball sooner (the default throw at the 4 m curtain, one
+// thread: 6.28 m/s left at 128 a side without it, 6.48 with it, 7.02 at 64; bench/README.md).
 void capTensionUnderBall(const StepContext& ctx, Cloth& cloth, StepState& state) {
     const SpringCache& S = state.springs;
     const LimitCache& C = state.limit;
