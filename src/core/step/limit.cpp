@@ -73,8 +73,8 @@ constexpr uint32_t kPrefilterWait = 4;
 constexpr size_t kSerialList = 2048;
 
 // Is a spring of rest length `rest` and squared length len2 over its limit by more than the
-// tolerance, given its ends' flags (or-ed)? Springs under a ball may stretch up to the tear
-// threshold: the ball, not the limit, decides where they are.
+// tolerance, given its ends' flags (or-ed)? Springs under a ball may stretch up to their held length
+// (heldLength: the tear threshold, or a gauge's stretch): the ball, not the limit, decides where they are.
 inline bool exceedsLimit(uint8_t endFlags, float rest, float len2, float doneRatio, const HeldLength& heldDone) {
     return len2 > sq((endFlags & kTouched) ? heldDone(rest) : rest * doneRatio);
 }

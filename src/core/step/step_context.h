@@ -66,7 +66,7 @@ struct StepContext {
 // springs between the held fabric and the contact, and that ring is one mesh spacing wide: a strain
 // threshold on it alone was a threshold on metres / spacing, so the thesis' big slow ball
 // (ball-r2-v3, Onal 4.1: the cloth slides over it) tore at 96 and 144 a side and not at 48
-// (bench/README.md, "A ball tears by metres of stretch, not by one ring's strain").
+// (bench/README.md, "A ball tears by metres of stretch").
 struct HeldLength {
     float limitRatio = 1;  // (1 + limit.max_stretch) x scale
     float excessRatio = 0; // (heldRatio - limitRatio) x scale
