@@ -70,14 +70,11 @@ Flight throwFromStartCamera(const std::string& scene, std::vector<std::string> s
     f.endDistanceWithoutBall = without.distance;
     {
         World largest = noBall;
-        std::vector<Piece> pieces = findPieces(largest.cloth);
-        std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.restArea > b.restArea; });
-        // Deleting renumbers triangles: the smallest pieces first, each found again by its area rank.
-        while (pieces.size() > 1) {
-            largest.deletePiece(pieces.back().firstTriangle);
-            pieces = findPieces(largest.cloth);
-            std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.restArea > b.restArea; });
-        }
+        // Deleting renumbers triangles: the smallest piece goes, then the pieces are found again.
+        for (std::vector<Piece> pieces = findPieces(largest.cloth); pieces.size() > 1; pieces = findPieces(largest.cloth))
+            largest.deletePiece(std::min_element(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+                                    return a.restArea < b.restArea;
+                                })->firstTriangle);
         OrbitCamera only;
         frameWorld(only, largest);
         f.endDistanceLargestPiece = only.distance;

@@ -328,10 +328,7 @@ void collideBall(Cloth& cloth, Ball& ball, uint32_t ballIndex, const Vec3& c0, c
             Touch t;
             if (!touch(ball.x, R, a, b, c, nt, side, t) || t.pen <= kContactSlop * R) return;
             push(cloth, near, tri, t.bary, ball, t.n, t.pen, s.friction);
-            for (Index p : tri.p) {
-                PackedParticle& q = packed[p];
-                for (int k = 0; k < 3; ++k) q.x[k] = cloth.x[p][k], q.v[k] = cloth.v[p][k];
-            }
+            for (Index p : tri.p) packed[p] = packedOf(cloth.x[p], cloth.v[p]);
             pushed = true;
             for (Index p : tri.p) cloth.flags[p] |= kTouched;
             for (size_t i = first; i < contacts.size(); ++i)

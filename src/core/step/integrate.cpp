@@ -15,11 +15,8 @@ void moveDrivers(const StepContext& ctx, Cloth& cloth, StepState& state) {
         for (Index p : d.particles) {
             cloth.x[p] += d.velocity * ctx.dt;
             cloth.v[p] = d.velocity;
-            if (p < state.packed.size())
-                for (int k = 0; k < 3; ++k) { // the strain scan and the tethers read these
-                    state.packed[p].x[k] = cloth.x[p][k];
-                    state.packed[p].v[k] = cloth.v[p][k];
-                }
+            if (p < state.packed.size()) // the strain scan and the tethers read these
+                state.packed[p] = packedOf(cloth.x[p], cloth.v[p]);
         }
 }
 

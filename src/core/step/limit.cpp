@@ -371,7 +371,7 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
         // anchors are pinned).
         for (size_t k = first; k < moved.size(); ++k) {
             const Index p = moved[k];
-            for (int c = 0; c < 3; ++c) packed[p].x[c] = x_[p][c], packed[p].v[c] = v_[p][c];
+            packed[p] = packedOf(x_[p], v_[p]);
         }
     }
     // A particle two sets moved is listed once: expand looks at each moved particle's springs.
@@ -691,10 +691,6 @@ void capTensionUnderBall(const StepContext& ctx, Cloth& cloth, StepState& state)
     constexpr float kFar = std::numeric_limits<float>::infinity();
     std::vector<float>& seen = state.bandDistance; // every entry +inf between uses (markStretchBand)
     seen.resize(cloth.particleCount(), kFar);
-    auto repack = [&](Index r) {
-        PackedParticle& pk = state.packed[r];
-        for (int k = 0; k < 3; ++k) pk.x[k] = cloth.x[r][k], pk.v[k] = cloth.v[r][k];
-    };
     std::vector<Index>& touched = state.bandQueue;
     touched.clear();
     for (const BallContact& c : state.contacts)
@@ -721,7 +717,8 @@ void capTensionUnderBall(const StepContext& ctx, Cloth& cloth, StepState& state)
             const float wp = cloth.invMass[p], wq = cloth.invMass[q];
             cloth.v[p] -= wp * kick, cloth.x[p] -= (wp * dt) * kick;
             cloth.v[q] += wq * kick, cloth.x[q] += (wq * dt) * kick;
-            repack(p), repack(q);
+            state.packed[p] = packedOf(cloth.x[p], cloth.v[p]);
+            state.packed[q] = packedOf(cloth.x[q], cloth.v[q]);
         }
     }
     for (Index p : touched) seen[p] = kFar;
