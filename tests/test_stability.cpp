@@ -5,6 +5,8 @@
 // Section index:
 //   [ESTIMATE]   stableStepEstimate: stable below it, the estimate within a factor of the truth
 //   [GUARD]      sub-steps chosen by the guard
+//   [DAMPING]    time.implicit_damping: the oscillator's decay, stable past the explicit bound, the
+//                guard's step from the stiffness alone
 //   [RANDOM]     randomized safe parameter sets, 5 s each (the kes law: 1.5 s)
 #include "clothtear/params.h"
 #include "clothtear/random.h"
@@ -382,3 +384,100 @@ TEST(Stability, GuardReportsWhatItSoftens) {
     EXPECT_LT(capped.guardStiffnessKept, 1.f);
     EXPECT_LT(capped.guardDampingKept, 1.f);
 }
+
+// ========================================================================================== [DAMPING]
+
+namespace {
+
+// The oscillator (test::buildOscillator) with spring damping, one sub-step of dt a frame, the guard
+// off: C's displacement u = y - 1 after each step. Its springs AC and BC each have k = S / 2 and
+// kd = D / 2 (weight 1/2) and lie at 45 degrees to u, so u'' + (kd / m) u' + (k / m) u = 0 with
+// m = rho / 3 (C's third of the unit triangle).
+std::vector<double> dampedOscillator(float stiffness, float damping, float dt, bool implicitDamping, int steps) {
+    World w;
+    w.settings = test::quietSettings();
+    Settings& s = w.settings;
+    s.material.stretchStiffness = stiffness;
+    s.material.stretchDamping = damping;
+    s.material.bendStiffness = 0.f;
+    s.material.bendDamping = 0.f;
+    s.time.frameDt = dt;
+    s.time.substeps = 1;
+    s.time.stabilityGuard = false;
+    s.time.implicitDamping = implicitDamping;
+    s.sleep.enabled = false;
+    EXPECT_EQ(test::buildOscillator(w), "");
+    std::vector<double> u;
+    for (int n = 0; n < steps; ++n) {
+        w.step();
+        u.push_back(double(w.cloth.x[2].y()) - 1.0);
+    }
+    return u;
+}
+
+// Taken implicitly, the damping of a slow mode is the material's: at omega dt = 0.02 the amplitude
+// of the lightly damped oscillator (zeta = 0.1) falls per period as exp(-gamma T_d / 2), within 2 %
+// of the log decrement, as the explicit damping does.
+TEST(Stability, ImplicitDampingDampsASlowModeAsTheMaterialSays) {
+    const double rho = 0.2, m = rho / 3.0, S = 60.0, k = S / 2.0;
+    const double omega = std::sqrt(k / m), zeta = 0.1, gamma = 2.0 * zeta * omega;
+    const double D = 2.0 * gamma * m; // kd = D / 2 = gamma m
+    const double dt = 0.02 / omega, periodD = 2.0 * M_PI / (omega * std::sqrt(1.0 - zeta * zeta));
+    const double decrement = 0.5 * gamma * periodD; // ln(amplitude ratio) per period
+    for (bool implicitDamping : {false, true}) {
+        const std::vector<double> u = dampedOscillator(float(S), float(D), float(dt), implicitDamping, 2000);
+        std::vector<double> peaks; // the upper peaks
+        for (size_t i = 1; i + 1 < u.size(); ++i)
+            if (u[i] > u[i - 1] && u[i] >= u[i + 1]) peaks.push_back(u[i]);
+        ASSERT_GE(peaks.size(), 5u) << "implicit " << implicitDamping;
+        const double measured = std::log(peaks[0] / peaks[4]) / 4.0;
+        EXPECT_NEAR(measured, decrement, 0.02 * decrement) << "implicit " << implicitDamping;
+    }
+}
+
+// Damping 2,500 x stronger (gamma dt = 5): explicit damping multiplies the velocity by about
+// 1 - gamma dt = -4 a step and blows up; taken implicitly the oscillator, now overdamped, creeps
+// back without crossing zero, never past its start.
+TEST(Stability, ImplicitDampingIsStablePastTheExplicitBound) {
+    const double rho = 0.2, m = rho / 3.0, S = 60.0, k = S / 2.0, omega = std::sqrt(k / m);
+    const double dt = 0.02 / omega, gamma = 5.0 / dt;
+    const float D = float(2.0 * gamma * m);
+    const std::vector<double> explicitRun = dampedOscillator(float(S), D, float(dt), false, 200);
+    const bool blewUp = !std::isfinite(explicitRun.back()) || std::abs(explicitRun.back()) > 1.0;
+    EXPECT_TRUE(blewUp) << "the explicit damping should not survive gamma dt = 5: u = " << explicitRun.back();
+    const std::vector<double> u = dampedOscillator(float(S), D, float(dt), true, 2000);
+    const double u0 = 1e-3;
+    for (size_t i = 0; i < u.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(u[i])) << "step " << i;
+        ASSERT_GT(u[i], 0.0) << "step " << i;
+        ASSERT_LE(u[i], u0 * (1.0 + 1e-4)) << "step " << i;
+    }
+    EXPECT_LT(u.back(), u[0]); // it does move back
+}
+
+// With the damping taken implicitly the guard's step follows the springs' stiffness alone: a 0.4 m
+// curtain takes the sub-steps it takes with no damping at all, at 33 and 65 a side, fewer than with
+// the damping explicit (it bounds the step by m / sum(kd), which falls as the spacing squared), and
+// keeps the material as set.
+TEST(Stability, ImplicitDampingLeavesTheGuardsStepToTheStiffness) {
+    auto substeps = [](int n, std::vector<std::string> extra) {
+        std::vector<std::string> sets = {"cloth.width=0.4", "cloth.height=0.4", "sleep.enabled=0",
+                                         "cloth.resolution_x=" + std::to_string(n),
+                                         "cloth.resolution_y=" + std::to_string(n)};
+        sets.insert(sets.end(), extra.begin(), extra.end());
+        World w;
+        EXPECT_EQ(loadScene(w, "curtain", sets), "");
+        w.step();
+        EXPECT_EQ(w.guardCappedSprings, 0u) << n;
+        return w.frameSubsteps;
+    };
+    for (int n : {33, 65}) {
+        const int explicitDamping = substeps(n, {});
+        const int implicitDamping = substeps(n, {"time.implicit_damping=1"});
+        const int undamped = substeps(n, {"material.stretch_damping=0", "material.bend_damping=0"});
+        EXPECT_EQ(implicitDamping, undamped) << n;
+        EXPECT_LT(implicitDamping * 3, explicitDamping * 2) << n; // at least a third fewer
+    }
+}
+
+} // namespace

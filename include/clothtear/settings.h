@@ -37,6 +37,12 @@ struct TimeSettings {
                                   // keeps the stiffness the user set (a finer or smaller cloth takes more
                                   // sub-steps) up to this budget, past it springs are capped; at or below
                                   // time.substeps it only caps (bench/README.md "Does the cloth hold?")
+    // Semi-implicit Euler with the linear material: the springs' damping taken implicitly (one
+    // Jacobi step of the damping's linear system after the other forces moved the velocities), so
+    // the guard's step follows the springs' stiffness alone. Explicit damping bounds the step by
+    // m / sum(kd), which shrinks as the spacing squared: a fine or small cloth took several times
+    // the sub-steps its stiffness needs (bench/README.md, "The springs' damping and the guard's step").
+    bool implicitDamping = false;
     float cgTolerance = 1e-5f;    // relative residual  implicit Euler: conjugate-gradient stop
     int32_t cgMaxIterations = 200; // count   implicit Euler: conjugate-gradient iteration cap
 };

@@ -4,6 +4,7 @@
 #include "phases.h"
 
 #include <algorithm>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -30,7 +31,22 @@ struct IntegrateParams {
     bool verletStart;  // Verlet: first step since a rebuild or a change of integrator
     Vec3* verletKick;  // Verlet: per particle, half the last step's velocity change (a dt / 2)
     float dt;
+    const float* dampingSum; // implicit damping: per particle, its springs' summed kd (SpringCache)
 };
+
+// What integrateRange does with the forces it sums. Whole: the integrator's step. With the damping
+// taken implicitly (semi-implicit Euler only), two stages around a second spring pass:
+//   Velocity  v* = v + a dt from every force but the springs' damping; x stays
+//   Damping   the forces summed are the damping's at v* (f_d = -K_d v*, K_d its Laplacian-like
+//             matrix); one Jacobi step of (M / dt + K_d) v = (M / dt) v* from v*:
+//               v = v* + f_d / (m / dt + c),  c = the particle's summed kd >= its block of K_d,
+//             then x += v dt. Since K_d <= 2 diag(c) and m / dt > 0, the step's matrix
+//             I - (M / dt + c)^-1 K_d has its eigenvalues in (-1, 1]: stable at any dt, and v* is
+//             left as it is where the cloth moves as a whole (f_d = 0). As dt -> 0 it is the
+//             explicit damping. Applied after the other forces, a mode's elastic bound stays
+//             (omega dt)^2 < 4 however strong its damping (bench/README.md, "The springs' damping
+//             and the guard's step").
+enum class Stage { Whole, Velocity, Damping };
 
 // (x, y, z, 0). Eigen's constructor from four scalars went through the stack here, and the 16-byte
 // load of what three smaller stores had just written could not be forwarded (the integrator at 8 x
@@ -50,7 +66,7 @@ inline Eigen::Vector4f vector4(float x, float y, float z) {
 // spring_groups.h): sums and clears those entries, then integrates. The
 // packed copy holds x and v as phaseSprings read them (nothing moves a particle in between) and gets
 // the new ones (the strain scan and the tethers read them).
-template <Integrator I, int NB, bool G>
+template <Integrator I, Stage St, int NB, bool G>
 void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, float* const* groups, size_t stride, int nb,
                     const IntegrateParams& P, Vec3* x, Vec3* v, PackedParticle* packed, const float* invMass) {
     using V4 = Eigen::Vector4f;
@@ -71,7 +87,22 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, float* cons
         if (w == 0.f) continue;
         Eigen::Map<V4, Eigen::Aligned16> px(packed[p].x), pv(packed[p].v);
         V4 xn = px, vn = pv;
+        if constexpr (St == Stage::Damping) {
+            vn += f * (P.dt * w / (1.f + P.dt * w * P.dampingSum[p]));
+            xn += vn * P.dt;
+            px = xn;
+            pv = vn;
+            x[p] = xn.head<3>();
+            v[p] = vn.head<3>();
+            continue;
+        }
         const V4 a = g - P.dragPerMass * vn + f * w;
+        if constexpr (St == Stage::Velocity) {
+            vn = (vn + a * P.dt) * P.keep;
+            pv = vn;
+            v[p] = vn.head<3>();
+            continue;
+        }
         if constexpr (I == Integrator::SemiImplicitEuler) {
             vn = (vn + a * P.dt) * P.keep;
             xn += vn * P.dt;
@@ -103,7 +134,7 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, float* cons
 }
 
 // One chunk of particles, split where the set of force buffers that cover it changes.
-template <Integrator I>
+template <Integrator I, Stage St = Stage::Whole>
 void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, PackedParticle* packed,
                          const float* invMass, ThreadBuffers& T) {
     auto& acc = T.acc;
@@ -127,7 +158,7 @@ void integrateKernel(Chunk c, const IntegrateParams& P, Vec3* x, Vec3* v, Packed
                 buf[nb++] = acc[k].data();
             }
         auto run = [&]<int NB, bool WithGroups>() {
-            integrateRange<I, NB, WithGroups>(b, e, buf, groups, stride, nb, P, x, v, packed, invMass);
+            integrateRange<I, St, NB, WithGroups>(b, e, buf, groups, stride, nb, P, x, v, packed, invMass);
         };
         switch (nb * 2 + G) {
         case 0: case 1: run.template operator()<0, false>(); break;
@@ -162,11 +193,28 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
     if (verlet) state.verletKick.resize(n, Vec3::Zero()); // torn-off copies start at 0
     P.verletKick = state.verletKick.data();
     P.dt = ctx.dt;
+    P.dampingSum = state.springs.dampingSum.data();
     Vec3* x = cloth.x.data();
     Vec3* v = cloth.v.data();
     const float* invMass = cloth.invMass.data();
     PackedParticle* packed = state.packed.data();
     ThreadBuffers& T = state.threads;
+    if (ctx.implicitDamping) {
+        // Semi-implicit Euler only (implicitDampingOn); the springs phase left the damping out.
+        using SIE = std::integral_constant<Integrator, Integrator::SemiImplicitEuler>;
+        auto stage = [&]<Stage St>() {
+            parallelRegion(n, threads, [&](int t, int nt) {
+                integrateKernel<SIE::value, St>(chunkOf(n, t, nt), P, x, v, packed, invMass, T);
+            });
+        };
+        stage.template operator()<Stage::Velocity>();
+        const SpringCache& S = state.springs;
+        springForcePass(ctx, cloth, state, S.zeros.data(), S.kd.data()); // the damping at v*
+        stage.template operator()<Stage::Damping>();
+        T.groupForcesSet = false;
+        moveDrivers(ctx, cloth, state);
+        return;
+    }
     parallelRegion(n, threads, [&](int t, int nt) {
         const Chunk c = chunkOf(n, t, nt);
         switch (ctx.integrator) {

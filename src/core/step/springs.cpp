@@ -26,11 +26,13 @@ namespace {
 // those (a tear's midpoints) and cloths past time.max_substeps are scaled; the kes law's springs
 // are capped one by one first (refreshSpringCache). It is also what keeps random safe parameter
 // sets finite (tests/test_stability.cpp).
-void guardParticleBudget(const Cloth& cloth, SpringCache& S, float dt, float dragPerMass) {
+// With the damping taken implicitly (dampingFree) only the stiffness counts and is scaled.
+void guardParticleBudget(const Cloth& cloth, SpringCache& S, float dt, float dragPerMass, bool dampingFree) {
     const size_t n = cloth.particleCount(), count = S.a16.size();
     std::vector<float> load(n, 0.f);
+    const float dampingShare = dampingFree ? 0.f : dt;
     for (size_t e = 0; e < count; ++e) {
-        const float term = 0.5f * dt * dt * S.k[e] + dt * S.kd[e];
+        const float term = 0.5f * dt * dt * S.k[e] + dampingShare * S.kd[e];
         load[S.a16[e] / 16] += cloth.invMass[S.a16[e] / 16] * term;
         load[S.b16[e] / 16] += cloth.invMass[S.b16[e] / 16] * term;
     }
@@ -44,7 +46,7 @@ void guardParticleBudget(const Cloth& cloth, SpringCache& S, float dt, float dra
     for (size_t e = 0; e < count; ++e) {
         const float f = std::min(load[S.a16[e] / 16], load[S.b16[e] / 16]);
         S.k[e] *= f;
-        S.kd[e] *= f;
+        if (!dampingFree) S.kd[e] *= f;
     }
 }
 
@@ -167,7 +169,9 @@ void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state) {
 // chunk of the entries then touches a band of the cloth.
 void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& state) {
     SpringCache& S = state.springs;
-    if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps) && S.perSpringCaps == ctx.perSpringCaps) return;
+    if (S.stamp.fresh(ctx.revisions, SpringCache::kDeps) && S.perSpringCaps == ctx.perSpringCaps &&
+        S.implicitDamping == ctx.implicitDamping)
+        return;
     const MaterialSettings& m = ctx.settings->material;
     const bool kes = m.model == MaterialModel::Kes;
     // kes: the structural springs follow the tensile law (kesWidth below) and hinges replace the
@@ -229,7 +233,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
                 if (ctx.perSpringCaps) {
                     const float w = cloth.invMass[copy.a] + cloth.invMass[copy.b];
                     if (kc * w > kCap) kc = kCap / w;
-                    if (dc * w > kdCap) dc = kdCap / w;
+                    if (dc * w > kdCap && !ctx.implicitDamping) dc = kdCap / w;
                 }
                 k += kc, damping += dc;
             }
@@ -246,7 +250,20 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     };
     fill(cloth.springs, 0, ns, float(stretchAsked.stiffness), float(stretchAsked.damping));
     fill(cloth.bends, ns, ns + nb, m.bendStiffness, m.bendDamping);
-    if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass);
+    if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass, ctx.implicitDamping);
+    // The damping taken implicitly (implicit_damping.cpp): each particle's summed damping, the
+    // diagonal its Jacobi step divides by, and zeros for the passes that leave k or kd out.
+    S.implicitDamping = ctx.implicitDamping;
+    S.dampingSum.clear();
+    S.zeros.clear();
+    if (ctx.implicitDamping) {
+        S.dampingSum.assign(cloth.particleCount(), 0.f);
+        for (size_t e = 0; e < ns + nb; ++e) {
+            S.dampingSum[S.a16[e] / 16] += S.kd[e];
+            S.dampingSum[S.b16[e] / 16] += S.kd[e];
+        }
+        S.zeros.assign(ns + nb, 0.f);
+    }
     // What the guard took from the material, for the report and the stats pane.
     size_t capped = 0;
     float stiffnessKept = 1.f, dampingKept = 1.f;
@@ -315,6 +332,13 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
         phaseSpringsKes(ctx, cloth, state);
         return;
     }
+    // With the damping taken implicitly the integrator runs a second pass for it on the velocities
+    // the other forces gave (implicit_damping.cpp): this one leaves it out.
+    springForcePass(ctx, cloth, state, S.k.data(), S.implicitDamping ? S.zeros.data() : S.kd.data());
+}
+
+void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, const float* k, const float* kd) {
+    SpringCache& S = state.springs;
     const size_t n = cloth.particleCount();
     const size_t ns = S.structural, nb = S.a16.size() - S.structural;
     const int threads = int(state.threads.acc.size());
@@ -358,7 +382,7 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
         }
     }
     for (int t = 0; t < nt; ++t) state.threads.range[t] = S.threadRange[t];
-    const SpringArrays arrays = springArraysOf(S);
+    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), k, kd};
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
     PackedParticle* packed = state.packed.data();
@@ -384,7 +408,7 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
         forShare(
             t,
             [&](size_t g0, size_t g1) {
-                springForcesGrouped(S.groupKernel, S.groups.data(), g0, g1, S.rest.data(), S.k.data(), S.kd.data(),
+                springForcesGrouped(S.groupKernel, S.groups.data(), g0, g1, S.rest.data(), k, kd,
                                     state.components, state.threads.groupForces[size_t(t)]);
             },
             [&](size_t e0, size_t e1) { springForces(arrays, e0, e1, packed, acc); });

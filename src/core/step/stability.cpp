@@ -90,6 +90,10 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
     const size_t n = cloth.particleCount();
     std::vector<double> k, kd;
     springSumsPerParticle(cloth, settings, k, kd);
+    // Damping taken implicitly (time.implicit_damping) is stable at any step: only the stiffness
+    // bounds it (implicit_damping.cpp).
+    const bool dampingFree = implicitDampingOn(settings);
+    if (dampingFree) std::fill(kd.begin(), kd.end(), 0.0);
     std::vector<double> springStep(n, std::numeric_limits<double>::infinity());
     if (bound == StepBound::SpringCaps) {
         // A particle's step is the shortest of its springs', sqrt(cap / kw) and capD / kdw; both
@@ -107,8 +111,8 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
             }
         };
         const AskedStiffness asked = structuralAsked(settings);
-        add(cloth.springs, asked.stiffness, asked.damping);
-        if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, m.bendDamping);
+        add(cloth.springs, asked.stiffness, dampingFree ? 0.0 : asked.damping);
+        if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, dampingFree ? 0.0 : m.bendDamping);
         for (Index p = 0; p < n; ++p) {
             if (kwMax[p] > 0) springStep[p] = std::sqrt(double(kStiffnessCap) / kwMax[p]);
             if (kdwMax[p] > 0) springStep[p] = std::min(springStep[p], double(kDampingCap) / kdwMax[p]);
