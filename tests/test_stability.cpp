@@ -5,8 +5,8 @@
 // Section index:
 //   [ESTIMATE]   stableStepEstimate: stable below it, the estimate within a factor of the truth
 //   [GUARD]      sub-steps chosen by the guard
-//   [DAMPING]    time.implicit_damping: the oscillator's decay, stable past the explicit bound, the
-//                guard's step from the stiffness alone
+//   [DAMPING]    time.damping: the oscillator's decay, stable past the explicit bound, the guard's
+//                step from the stiffness alone, auto where the explicit damping would soften
 //   [RANDOM]     randomized safe parameter sets, 5 s each (the kes law: 1.5 s)
 #include "clothtear/params.h"
 #include "clothtear/random.h"
@@ -404,7 +404,7 @@ std::vector<double> dampedOscillator(float stiffness, float damping, float dt, b
     s.time.frameDt = dt;
     s.time.substeps = 1;
     s.time.stabilityGuard = false;
-    s.time.implicitDamping = implicitDamping;
+    s.time.damping = implicitDamping ? DampingMode::Implicit : DampingMode::Explicit;
     s.sleep.enabled = false;
     EXPECT_EQ(test::buildOscillator(w), "");
     std::vector<double> u;
@@ -472,12 +472,44 @@ TEST(Stability, ImplicitDampingLeavesTheGuardsStepToTheStiffness) {
         return w.frameSubsteps;
     };
     for (int n : {33, 65}) {
-        const int explicitDamping = substeps(n, {});
-        const int implicitDamping = substeps(n, {"time.implicit_damping=1"});
-        const int undamped = substeps(n, {"material.stretch_damping=0", "material.bend_damping=0"});
+        const int explicitDamping = substeps(n, {"time.damping=explicit"});
+        const int implicitDamping = substeps(n, {"time.damping=implicit"});
+        const int undamped = substeps(n, {"time.damping=explicit", "material.stretch_damping=0", "material.bend_damping=0"});
+        EXPECT_EQ(substeps(n, {}), explicitDamping) << n; // auto: the explicit damping's step fits
         EXPECT_EQ(implicitDamping, undamped) << n;
         EXPECT_LT(implicitDamping * 3, explicitDamping * 2) << n; // at least a third fewer
     }
+}
+
+// time.damping = auto (the default): where the explicit damping's step would be past
+// time.max_substeps, so that the guard would soften the cloth, the damping is taken implicitly and
+// the material stays as set. The 0.4 m curtain at 129 a side: explicitly the guard asks 644
+// sub-steps and softens every spring at 200; auto takes the stiffness's 172 and caps none. Where
+// the implicit step would not fit either (max_substeps 100), auto stays explicit and softens.
+TEST(Stability, AutoDampingKeepsTheMaterialWhereExplicitDampingWouldSoftenIt) {
+    auto run = [](std::vector<std::string> extra) {
+        std::vector<std::string> sets = {"cloth.width=0.4", "cloth.height=0.4", "sleep.enabled=0",
+                                         "cloth.resolution_x=129", "cloth.resolution_y=129"};
+        sets.insert(sets.end(), extra.begin(), extra.end());
+        World w;
+        EXPECT_EQ(loadScene(w, "curtain", sets), "");
+        w.step();
+        EXPECT_TRUE(w.finite);
+        return std::pair<int, size_t>(w.frameSubsteps, w.guardCappedSprings);
+    };
+    const auto [explicitSteps, explicitCapped] = run({"time.damping=explicit"});
+    EXPECT_EQ(explicitSteps, 200);
+    EXPECT_GT(explicitCapped, 0u);
+    const auto [autoSteps, autoCapped] = run({});
+    const auto [undampedSteps, undampedCapped] =
+        run({"time.damping=explicit", "material.stretch_damping=0", "material.bend_damping=0"});
+    EXPECT_EQ(autoSteps, undampedSteps);
+    EXPECT_LT(autoSteps, 200);
+    EXPECT_EQ(autoCapped, 0u);
+    EXPECT_EQ(undampedCapped, 0u);
+    const auto [tightSteps, tightCapped] = run({"time.max_substeps=100"});
+    EXPECT_EQ(tightSteps, 100);
+    EXPECT_GT(tightCapped, 0u);
 }
 
 } // namespace

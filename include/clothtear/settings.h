@@ -14,6 +14,11 @@ namespace clothtear {
 enum class Integrator : int32_t { SemiImplicitEuler = 0, ForwardEuler = 1, Verlet = 2, ImplicitEuler = 3, Xpbd = 4 };
 inline bool isExplicit(Integrator i) { return i == Integrator::SemiImplicitEuler || i == Integrator::ForwardEuler || i == Integrator::Verlet; }
 enum class AirModel : int32_t { Drag = 0, Keserica = 1 };
+// How semi-implicit Euler takes the springs' damping (time.damping; integrate.cpp): explicitly, or
+// implicitly (one Jacobi step after the other forces: stable at any step, a second spring pass),
+// or auto: implicitly only where the explicit damping would make the stability guard soften the
+// material (its step past time.max_substeps) and the implicit one would not.
+enum class DampingMode : int32_t { Explicit = 0, Implicit = 1, Auto = 2 };
 // How the length limit's passes apply their corrections (src/core/step/limit.cpp):
 //   GaussSeidel  in place, spring after spring, in one canonical order (the scan's)
 //   Jacobi       averaged and over-relaxed, each spring's share divided by its ends' correction counts
@@ -37,12 +42,11 @@ struct TimeSettings {
                                   // keeps the stiffness the user set (a finer or smaller cloth takes more
                                   // sub-steps) up to this budget, past it springs are capped; at or below
                                   // time.substeps it only caps (bench/README.md "Does the cloth hold?")
-    // Semi-implicit Euler with the linear material: the springs' damping taken implicitly (one
-    // Jacobi step of the damping's linear system after the other forces moved the velocities), so
-    // the guard's step follows the springs' stiffness alone. Explicit damping bounds the step by
-    // m / sum(kd), which shrinks as the spacing squared: a fine or small cloth took several times
-    // the sub-steps its stiffness needs (bench/README.md, "The springs' damping and the guard's step").
-    bool implicitDamping = false;
+    // Semi-implicit Euler with the linear material (DampingMode). Explicit damping bounds the step
+    // by m / sum(kd), which shrinks as the spacing squared: a fine or small cloth took several
+    // times the sub-steps its stiffness needs, and past time.max_substeps the guard softened it
+    // (bench/README.md, "The springs' damping and the guard's step").
+    DampingMode damping = DampingMode::Auto;
     float cgTolerance = 1e-5f;    // relative residual  implicit Euler: conjugate-gradient stop
     int32_t cgMaxIterations = 200; // count   implicit Euler: conjugate-gradient iteration cap
 };

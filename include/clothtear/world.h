@@ -100,9 +100,11 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings);
 // hold at most lightMassFraction of the cloth's mass (a tear's light midpoint particles get capped
 // springs instead of the whole cloth more sub-steps). With `interacting` (a ball near the cloth or
 // a hand moving it) or material.model = kes, the guard's conservative step instead: no longer than
-// stableStepEstimate and short enough that no spring needs the guard's per-spring cap.
+// stableStepEstimate and short enough that no spring needs the guard's per-spring cap. With
+// `dampingFree` the springs' damping is left out (semi-implicit Euler taking it implicitly,
+// time.damping: then only the stiffness bounds the step).
 double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction,
-                         bool interacting = false);
+                         bool interacting = false, bool dampingFree = false);
 // The fraction World::step passes: the lightest 1% of the mass may get capped springs.
 inline constexpr double kGuardLightMass = 0.01;
 

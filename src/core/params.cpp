@@ -13,6 +13,7 @@ namespace {
 const char* const kIntegratorNames[] = {"semi-implicit-euler", "forward-euler", "verlet", "implicit-euler", "xpbd",
                                           nullptr};
 const char* const kAirNames[] = {"drag", "keserica", nullptr};
+const char* const kDampingNames[] = {"explicit", "implicit", "auto", nullptr};
 const char* const kLimitSolverNames[] = {"gauss-seidel", "jacobi", nullptr};
 const char* const kMaterialNames[] = {"linear", "kes", nullptr};
 const char* const kMeshNames[] = {"grid", "irregular", "obj", nullptr};
@@ -33,7 +34,7 @@ const ParamInfo kParams[] = {
     CT_E("time.integrator", time.integrator, kIntegratorNames, "Integration method (implicit-euler, xpbd: references, stable at any step, no stability guard)", false),
     CT_B("time.stability_guard", time.stabilityGuard, "Explicit integrators: raise the sub-steps (up to time.max_substeps) to the stable step estimated from the stiffest spring on the lightest particle, and cap each spring still too stiff (off: unsafe on purpose)", false),
     CT_I("time.max_substeps", time.maxSubsteps, 1, 400, 1, 2000, "", "Stability guard: most sub-steps per frame it may take for the material's stable step (beyond it, springs are capped; at most time.substeps: it only caps)", false),
-    CT_B("time.implicit_damping", time.implicitDamping, "Semi-implicit Euler, linear material: the springs' damping taken implicitly, so the guard's step follows their stiffness alone (a fine or small cloth takes far fewer sub-steps)", false),
+    CT_E("time.damping", time.damping, kDampingNames, "Semi-implicit Euler, linear material: the springs' damping explicit, implicit (stable at any step, so the guard's step follows the stiffness alone; a second spring pass) or auto (implicit only where explicit damping would make the guard soften the cloth)", false),
     CT_F("time.cg_tolerance", time.cgTolerance, 1e-8, 1e-2, 1e-10, 0.1, "", "Implicit Euler: relative residual at which the conjugate-gradient solve stops", false),
     CT_I("time.cg_max_iterations", time.cgMaxIterations, 10, 1000, 1, 100000, "", "Implicit Euler: most conjugate-gradient iterations per sub-step", false),
     CT_F("time.verlet_friction", time.verletFriction, 0, 0.2, 0, 1, "", "Verlet: fraction of velocity lost per step (Keserica f)", false),

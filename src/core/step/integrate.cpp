@@ -200,7 +200,7 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
     PackedParticle* packed = state.packed.data();
     ThreadBuffers& T = state.threads;
     if (ctx.implicitDamping) {
-        // Semi-implicit Euler only (implicitDampingOn); the springs phase left the damping out.
+        // Semi-implicit Euler only (implicitDampingAllowed); the springs phase left the damping out.
         using SIE = std::integral_constant<Integrator, Integrator::SemiImplicitEuler>;
         auto stage = [&]<Stage St>() {
             parallelRegion(n, threads, [&](int t, int nt) {

@@ -12,7 +12,7 @@ void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state);
 void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state);
 // springs.cpp: packs the particles' x and v as the kernels read them and adds every spring's force
 // with stiffness k and damping kd (arrays over the cache's entries) into the force buffers: the
-// springs phase's pass, and with time.implicit_damping the integrator's damping pass (k = 0).
+// springs phase's pass, and with the damping taken implicitly (time.damping) the integrator's damping pass (k = 0).
 void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, const float* k, const float* kd);
 // material.model = kes (kes_forces.cpp): the tensile law on the structural springs and the
 // hysteretic hinges, on one thread's buffer; advances the hinges' memory (Cloth::bendMemory).

@@ -16,7 +16,7 @@ bool MaterialInputs::operator==(const MaterialInputs& o) const {
            a.bendDamping == b.bendDamping && a.model == b.model && a.kesT1 == b.kesT1 && a.kesT2 == b.kesT2 &&
            a.kesT3 == b.kesT3 && a.kesT4 == b.kesT4 && a.kesBendD == b.kesBendD && a.kesBendD1 == b.kesBendD1 &&
            a.kesBendAlpha == b.kesBendAlpha && kesStrain == o.kesStrain && density == o.density &&
-           stabilityGuard == o.stabilityGuard && implicitDamping == o.implicitDamping && integrator == o.integrator && air == o.air &&
+           stabilityGuard == o.stabilityGuard && damping == o.damping && integrator == o.integrator && air == o.air &&
            airDrag == o.airDrag;
 }
 
@@ -28,7 +28,7 @@ const Revisions& RevisionTracker::observe(const World& w, float dt) {
     m.density = w.cloth.density;
     m.stabilityGuard = w.settings.time.stabilityGuard;
     m.integrator = w.settings.time.integrator;
-    m.implicitDamping = implicitDampingOn(w.settings);
+    m.damping = w.settings.time.damping;
     m.air = w.settings.air.model;
     m.airDrag = w.settings.air.dragCoefficient;
     m.kesStrain = w.settings.material.model == MaterialModel::Kes ? float(kesStrainRange(w.settings)) : 0.f;

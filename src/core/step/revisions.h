@@ -63,7 +63,7 @@ struct MaterialInputs {
     MaterialSettings material;
     float density = 0.f;
     bool stabilityGuard = false;
-    bool implicitDamping = false; // implicitDampingOn: the guard's step and caps leave the damping out
+    DampingMode damping = DampingMode::Explicit; // time.damping: the guard's step and caps may leave the damping out
     Integrator integrator = Integrator::SemiImplicitEuler;
     AirModel air = AirModel::Drag;
     float airDrag = 0.f;

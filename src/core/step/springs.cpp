@@ -251,7 +251,7 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     fill(cloth.springs, 0, ns, float(stretchAsked.stiffness), float(stretchAsked.damping));
     fill(cloth.bends, ns, ns + nb, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass, ctx.implicitDamping);
-    // The damping taken implicitly (implicit_damping.cpp): each particle's summed damping, the
+    // The damping taken implicitly (integrate.cpp): each particle's summed damping, the
     // diagonal its Jacobi step divides by, and zeros for the passes that leave k or kd out.
     S.implicitDamping = ctx.implicitDamping;
     S.dampingSum.clear();
@@ -333,7 +333,7 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
         return;
     }
     // With the damping taken implicitly the integrator runs a second pass for it on the velocities
-    // the other forces gave (implicit_damping.cpp): this one leaves it out.
+    // the other forces gave (integrate.cpp): this one leaves it out.
     springForcePass(ctx, cloth, state, S.k.data(), S.implicitDamping ? S.zeros.data() : S.kd.data());
 }
 

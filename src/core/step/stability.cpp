@@ -85,14 +85,14 @@ enum class StepBound {
 // step; it is 1.5-1.9 x shorter than the budget's (76 instead of 48 sub-steps a frame at 128 x 128)
 // and kept where the ball and drag outcomes were measured and are tested (bench/README.md, "The
 // guard's step from the particle budget").
-std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const Settings& settings, StepBound bound) {
+std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const Settings& settings, StepBound bound,
+                                                      bool dampingFree) {
     const MaterialSettings& m = settings.material;
     const size_t n = cloth.particleCount();
     std::vector<double> k, kd;
     springSumsPerParticle(cloth, settings, k, kd);
-    // Damping taken implicitly (time.implicit_damping) is stable at any step: only the stiffness
-    // bounds it (implicit_damping.cpp).
-    const bool dampingFree = implicitDampingOn(settings);
+    // Damping taken implicitly (time.damping) is stable at any step: only the stiffness bounds it
+    // (integrate.cpp).
     if (dampingFree) std::fill(kd.begin(), kd.end(), 0.0);
     std::vector<double> springStep(n, std::numeric_limits<double>::infinity());
     if (bound == StepBound::SpringCaps) {
@@ -146,17 +146,19 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     double best = std::numeric_limits<double>::infinity();
-    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable))
+    const bool dampingFree = implicitDampingAllowed(settings) && settings.time.damping == DampingMode::Implicit;
+    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable, dampingFree))
         best = std::min(best, step);
     return best;
 }
 
-double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction, bool interacting) {
+double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction, bool interacting,
+                         bool dampingFree) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     const bool caps = interacting || settings.material.model == MaterialModel::Kes;
     std::vector<std::pair<double, double>> steps =
-        stepsAndMasses(cloth, settings, caps ? StepBound::SpringCaps : StepBound::Budget);
+        stepsAndMasses(cloth, settings, caps ? StepBound::SpringCaps : StepBound::Budget, dampingFree);
     if (steps.empty())
         return std::numeric_limits<double>::infinity();
     // The step every particle meets but the ones that need a shorter one and together hold at most

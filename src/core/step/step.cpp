@@ -157,27 +157,44 @@ void World::step() {
 // triangles, and a torn cloth's small midpoint particles would otherwise multiply the sub-steps
 // of the whole cloth (a 2 m cloth at 65 x 65 went from 20 to 200 per frame after 11 tears); their
 // springs are capped instead, and the limit holds their length.
+//
+// The springs' damping (time.damping): taken explicitly it bounds the step by m / sum(kd), which
+// shrinks as the spacing squared; taken implicitly only the stiffness does. With auto the guard
+// takes it implicitly where the explicit damping's step would be past time.max_substeps (so the
+// guard would soften the cloth) and the stiffness's step is not: the material as set, at a second
+// spring pass a sub-step (bench/README.md, "The springs' damping and the guard's step").
 int World::guardSubsteps() {
     const TimeSettings& T = settings.time;
-    if (!T.stabilityGuard || !isExplicit(T.integrator) || T.maxSubsteps <= T.substeps) return T.substeps;
     StepState& state = *state_;
+    state.dampingImplicit = false;
+    if (!T.stabilityGuard || !isExplicit(T.integrator) || T.maxSubsteps <= T.substeps) return T.substeps;
     const Revisions& now = state.revisions.observe(*this); // the estimate does not depend on dt
     GuardCache& G = state.guard;
     if (!G.stamp.fresh(now, GuardCache::kDeps)) {
-        G.stableKnown = G.capsKnown = false;
+        G.stableKnown = G.capsKnown = G.stableFreeKnown = G.capsFreeKnown = false;
         G.stamp.set(now);
     }
     // Each estimate only when a frame needs it: while a hand tears the cloth every tear changes the
     // topology, and the budget's step, unused then, was half the guard's cost.
-    if (state.interacting && !G.capsKnown) {
-        G.capsStep = guardStepEstimate(cloth, settings, kGuardLightMass, true);
-        G.capsKnown = true;
+    auto step = [&](bool dampingFree) {
+        const bool caps = state.interacting;
+        bool& known = dampingFree ? (caps ? G.capsFreeKnown : G.stableFreeKnown) : (caps ? G.capsKnown : G.stableKnown);
+        double& value = dampingFree ? (caps ? G.capsFreeStep : G.stableFreeStep) : (caps ? G.capsStep : G.stableStep);
+        if (!known) {
+            value = guardStepEstimate(cloth, settings, kGuardLightMass, caps, dampingFree);
+            known = true;
+        }
+        return std::ceil(double(T.frameDt) / value);
+    };
+    const bool allowed = implicitDampingAllowed(settings);
+    double need = step(allowed && T.damping == DampingMode::Implicit);
+    if (allowed && T.damping == DampingMode::Auto && need > double(T.maxSubsteps)) {
+        const double free = step(true);
+        if (free <= double(T.maxSubsteps)) {
+            state.dampingImplicit = true;
+            need = free;
+        }
     }
-    if (!state.interacting && !G.stableKnown) {
-        G.stableStep = guardStepEstimate(cloth, settings, kGuardLightMass);
-        G.stableKnown = true;
-    }
-    const double need = std::ceil(double(T.frameDt) / (state.interacting ? G.capsStep : G.stableStep));
     return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need));
 }
 

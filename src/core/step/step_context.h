@@ -47,8 +47,9 @@ struct StepContext {
     // The stability guard caps springs one by one (spring_caps.h): with the kes law, and with the
     // linear material while a ball is near or a hand moves (StepState::interacting).
     bool perSpringCaps = false;
-    // time.implicit_damping where it applies (implicitDampingOn): the springs phase computes the
-    // elastic forces only and the integrator takes the damping implicitly (implicit_damping.cpp).
+    // The springs' damping taken implicitly this frame (time.damping implicit, or auto where the
+    // guard chose it: StepState::dampingImplicit): the springs phase computes the elastic forces
+    // only and the integrator takes the damping (integrate.cpp).
     bool implicitDamping = false;
     float dragPerMass = 0; // 1/s, a = -dragPerMass v, capped by the guard (guardDragPerMass)
     float keep = 1;        // Keserica model: velocity kept per sub-step
@@ -82,10 +83,11 @@ inline HeldLength heldLength(const StepContext& c, float scale) {
     return HeldLength{c.maxRatio * scale, (c.heldRatio - c.maxRatio) * scale, c.tearGauge};
 }
 
-// time.implicit_damping where it applies: semi-implicit Euler with the linear material (the other
-// explicit integrators and the kes law keep their explicit damping; the references have their own).
-inline bool implicitDampingOn(const Settings& s) {
-    return s.time.implicitDamping && s.time.integrator == Integrator::SemiImplicitEuler &&
+// time.damping may take the damping implicitly: semi-implicit Euler with the linear material (the
+// other explicit integrators and the kes law keep their explicit damping; the references have their
+// own), and the setting not explicit.
+inline bool implicitDampingAllowed(const Settings& s) {
+    return s.time.damping != DampingMode::Explicit && s.time.integrator == Integrator::SemiImplicitEuler &&
            s.material.model == MaterialModel::Linear;
 }
 

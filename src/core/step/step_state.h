@@ -56,7 +56,7 @@ struct SpringCache {
     std::vector<float> kesWidth;     // m
     bool kes = false;                // built for the kes model (no bend-shear entries)
     bool perSpringCaps = false;      // built with the per-spring caps (StepContext::perSpringCaps)
-    // Built for the damping taken implicitly (StepContext::implicitDamping, implicit_damping.cpp):
+    // Built for the damping taken implicitly (StepContext::implicitDamping, integrate.cpp):
     // per particle the sum of its entries' kd (N s/m; an upper bound of its damping block's largest
     // eigenvalue), and zeros as long as the entries (the k or kd of a pass that leaves them out).
     bool implicitDamping = false;
@@ -159,6 +159,9 @@ struct GuardCache {
     bool capsKnown = false;   // capsStep is computed the first time a frame interacts
     double stableStep = 0; // s, the guard's step within the particle budget
     double capsStep = 0;   // s, the step without per-spring caps (while interacting, step.cpp)
+    // The same two with the springs' damping left out (time.damping implicit or auto).
+    bool stableFreeKnown = false, capsFreeKnown = false;
+    double stableFreeStep = 0, capsFreeStep = 0;
 };
 
 // What sleep.cpp remembers of the cloth it put to sleep.
@@ -232,6 +235,9 @@ struct StepState {
     // This frame a ball is near the cloth or a hand (driver) moves: the guard takes its conservative
     // step and caps springs one by one (step.cpp, World::guardSubsteps).
     bool interacting = false;
+    // This frame takes the springs' damping implicitly under time.damping = auto: the guard chose it
+    // (World::guardSubsteps) because the explicit damping's step would be past time.max_substeps.
+    bool dampingImplicit = false;
     SleepState sleep;
 };
 
