@@ -4,7 +4,6 @@
 #include "phases.h"
 
 #include <algorithm>
-#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -201,10 +200,9 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
     ThreadBuffers& T = state.threads;
     if (ctx.implicitDamping) {
         // Semi-implicit Euler only (implicitDampingAllowed); the springs phase left the damping out.
-        using SIE = std::integral_constant<Integrator, Integrator::SemiImplicitEuler>;
         auto stage = [&]<Stage St>() {
             parallelRegion(n, threads, [&](int t, int nt) {
-                integrateKernel<SIE::value, St>(chunkOf(n, t, nt), P, x, v, packed, invMass, T);
+                integrateKernel<Integrator::SemiImplicitEuler, St>(chunkOf(n, t, nt), P, x, v, packed, invMass, T);
             });
         };
         stage.template operator()<Stage::Velocity>();
