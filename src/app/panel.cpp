@@ -356,7 +356,8 @@ void drawStatsPane(AppState& st, const World& world) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Sub-steps of the last frame: the stability guard takes as many as the material\n"
                           "needs to keep the stiffness you set (a finer or smaller cloth needs more),\n"
-                          "up to time.max_substeps.");
+                          "up to time.max_substeps. Where the springs' damping alone would need more,\n"
+                          "it is taken implicitly instead (time.damping = auto).");
     // A capped spring may keep all of its stiffness and lose damping only (the light particles a
     // ball's tears make): "at 100% stiffness" under "softer than set" read as a contradiction.
     if (world.guardCappedSprings > 0 && world.guardStiffnessKept < 0.995f)
