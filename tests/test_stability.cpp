@@ -455,19 +455,25 @@ TEST(Stability, ImplicitDampingIsStablePastTheExplicitBound) {
     EXPECT_LT(u.back(), u[0]); // it does move back
 }
 
+// The 0.4 m curtain at n x n, sleep off, with `extra` settings, after its first frame.
+World smallCurtainFirstFrame(int n, const std::vector<std::string>& extra) {
+    std::vector<std::string> sets = {"cloth.width=0.4", "cloth.height=0.4", "sleep.enabled=0",
+                                     "cloth.resolution_x=" + std::to_string(n), "cloth.resolution_y=" + std::to_string(n)};
+    sets.insert(sets.end(), extra.begin(), extra.end());
+    World w;
+    EXPECT_EQ(loadScene(w, "curtain", sets), "");
+    w.step();
+    EXPECT_TRUE(w.finite);
+    return w;
+}
+
 // With the damping taken implicitly the guard's step follows the springs' stiffness alone: a 0.4 m
 // curtain takes the sub-steps it takes with no damping at all, at 33 and 65 a side, fewer than with
 // the damping explicit (it bounds the step by m / sum(kd), which falls as the spacing squared), and
 // keeps the material as set.
 TEST(Stability, ImplicitDampingLeavesTheGuardsStepToTheStiffness) {
-    auto substeps = [](int n, std::vector<std::string> extra) {
-        std::vector<std::string> sets = {"cloth.width=0.4", "cloth.height=0.4", "sleep.enabled=0",
-                                         "cloth.resolution_x=" + std::to_string(n),
-                                         "cloth.resolution_y=" + std::to_string(n)};
-        sets.insert(sets.end(), extra.begin(), extra.end());
-        World w;
-        EXPECT_EQ(loadScene(w, "curtain", sets), "");
-        w.step();
+    auto substeps = [](int n, const std::vector<std::string>& extra) {
+        const World w = smallCurtainFirstFrame(n, extra);
         EXPECT_EQ(w.guardCappedSprings, 0u) << n;
         return w.frameSubsteps;
     };
@@ -487,14 +493,8 @@ TEST(Stability, ImplicitDampingLeavesTheGuardsStepToTheStiffness) {
 // sub-steps and softens every spring at 200; auto takes the stiffness's 172 and caps none. Where
 // the implicit step would not fit either (max_substeps 100), auto stays explicit and softens.
 TEST(Stability, AutoDampingKeepsTheMaterialWhereExplicitDampingWouldSoftenIt) {
-    auto run = [](std::vector<std::string> extra) {
-        std::vector<std::string> sets = {"cloth.width=0.4", "cloth.height=0.4", "sleep.enabled=0",
-                                         "cloth.resolution_x=129", "cloth.resolution_y=129"};
-        sets.insert(sets.end(), extra.begin(), extra.end());
-        World w;
-        EXPECT_EQ(loadScene(w, "curtain", sets), "");
-        w.step();
-        EXPECT_TRUE(w.finite);
+    auto run = [](const std::vector<std::string>& extra) {
+        const World w = smallCurtainFirstFrame(129, extra);
         return std::pair<int, size_t>(w.frameSubsteps, w.guardCappedSprings);
     };
     const auto [explicitSteps, explicitCapped] = run({"time.damping=explicit"});

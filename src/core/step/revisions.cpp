@@ -1,6 +1,5 @@
 // Revisions (revisions.h): value comparison of the inputs a user writes directly, counters for the rest.
 #include "revisions.h"
-#include "step_context.h"
 
 #include "clothtear/kes.h"
 #include "clothtear/world.h"

@@ -146,8 +146,7 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
     if (!isExplicit(settings.time.integrator))
         return std::numeric_limits<double>::infinity();
     double best = std::numeric_limits<double>::infinity();
-    const bool dampingFree = implicitDampingAllowed(settings) && settings.time.damping == DampingMode::Implicit;
-    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable, dampingFree))
+    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable, implicitDampingAlways(settings)))
         best = std::min(best, step);
     return best;
 }

@@ -186,9 +186,8 @@ int World::guardSubsteps() {
         }
         return std::ceil(double(T.frameDt) / value);
     };
-    const bool allowed = implicitDampingAllowed(settings);
-    double need = step(allowed && T.damping == DampingMode::Implicit);
-    if (allowed && T.damping == DampingMode::Auto && need > double(T.maxSubsteps)) {
+    double need = step(implicitDampingAlways(settings));
+    if (implicitDampingAllowed(settings) && T.damping == DampingMode::Auto && need > double(T.maxSubsteps)) {
         const double free = step(true);
         if (free <= double(T.maxSubsteps)) {
             state.dampingImplicit = true;

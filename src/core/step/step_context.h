@@ -90,6 +90,10 @@ inline bool implicitDampingAllowed(const Settings& s) {
     return s.time.damping != DampingMode::Explicit && s.time.integrator == Integrator::SemiImplicitEuler &&
            s.material.model == MaterialModel::Linear;
 }
+// ...and taken implicitly in every frame (time.damping = implicit), not only where auto chooses it.
+inline bool implicitDampingAlways(const Settings& s) {
+    return implicitDampingAllowed(s) && s.time.damping == DampingMode::Implicit;
+}
 
 // Wind acts: on, with a speed and a drag coefficient (the wind phase runs; a cloth in wind never sleeps).
 bool windBlows(const Settings& settings);
