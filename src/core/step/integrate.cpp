@@ -97,9 +97,10 @@ void integrateRange(size_t b, size_t e, Eigen::Vector4f* const* buf, float* cons
         }
         const V4 a = g - P.dragPerMass * vn + f * w;
         if constexpr (St == Stage::Velocity) {
+            // v* goes to the packed copy only: the damping pass reads it there, and the damping
+            // stage writes v.
             vn = (vn + a * P.dt) * P.keep;
             pv = vn;
-            v[p] = vn.head<3>();
             continue;
         }
         if constexpr (I == Integrator::SemiImplicitEuler) {
@@ -206,8 +207,7 @@ void phaseIntegrate(const StepContext& ctx, Cloth& cloth, StepState& state) {
             });
         };
         stage.template operator()<Stage::Velocity>();
-        const SpringCache& S = state.springs;
-        springForcePass(ctx, cloth, state, S.zeros.data(), S.kd.data()); // the damping at v*
+        springForcePass(ctx, cloth, state, SpringTerms::Damping); // the damping at v*
         stage.template operator()<Stage::Damping>();
         T.groupForcesSet = false;
         moveDrivers(ctx, cloth, state);

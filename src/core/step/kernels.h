@@ -45,6 +45,8 @@ inline Acc4& accAt(Acc4* acc, uint32_t off16) { return acc[off16 >> 4]; }
 
 // Hooke + damping along spring i, on its first end (the second gets the opposite):
 //   f = (k (L - L0) + kd (v_b - v_a).n) n,   n = (x_b - x_a) / L;   nothing when L is 0.
+// T: both terms, or one of them (SpringTerms, spring_groups.h).
+template <SpringTerms T = SpringTerms::Both>
 inline void springForceScalar(const SpringArrays& s, size_t i, const PackedParticle* xv, Acc4* acc) {
     const PackedParticle& A = packedAt(xv, s.a16[i]);
     const PackedParticle& B = packedAt(xv, s.b16[i]);
@@ -52,14 +54,20 @@ inline void springForceScalar(const SpringArrays& s, size_t i, const PackedParti
     const float len = std::sqrt(dx * dx + dy * dy + dz * dz);
     if (!(len > 1e-12f)) return;
     const float inv = 1.f / len;
-    const float dvd = ((B.v[0] - A.v[0]) * dx + (B.v[1] - A.v[1]) * dy + (B.v[2] - A.v[2]) * dz) * inv;
-    const float f = (s.k[i] * (len - s.rest[i]) + s.kd[i] * dvd) * inv;
+    float along = 0.f; // the force's size times L
+    if constexpr (T != SpringTerms::Damping) along = s.k[i] * (len - s.rest[i]);
+    if constexpr (T != SpringTerms::Elastic) {
+        const float dvd = ((B.v[0] - A.v[0]) * dx + (B.v[1] - A.v[1]) * dy + (B.v[2] - A.v[2]) * dz) * inv;
+        along = T == SpringTerms::Both ? along + s.kd[i] * dvd : s.kd[i] * dvd;
+    }
+    const float f = along * inv;
     const Acc4 fv(f * dx, f * dy, f * dz, 0.f);
     accAt(acc, s.a16[i]) += fv;
     accAt(acc, s.b16[i]) -= fv;
 }
 
-// Springs [begin, end) into `acc`.
+// Springs [begin, end) into `acc`; T: both terms or one of them.
+template <SpringTerms T = SpringTerms::Both>
 inline void springForces(const SpringArrays& s, size_t begin, size_t end, const PackedParticle* xv, Acc4* acc) {
     size_t i = begin;
 #if defined(__SSE2__)
@@ -73,7 +81,8 @@ inline void springForces(const SpringArrays& s, size_t begin, size_t end, const 
     const __m128 tiny = _mm_set1_ps(1e-12f);
     const __m128 one = _mm_set1_ps(1.f);
     for (; i + 4 <= end; i += 4) {
-        __m128 d[4], dv[4];
+        constexpr bool velocities = T != SpringTerms::Elastic;
+        __m128 d[4], dv[4] = {};
         uint32_t ia[4], ib[4];
         for (int j = 0; j < 4; ++j) {
             ia[j] = a16[i + j];
@@ -81,21 +90,26 @@ inline void springForces(const SpringArrays& s, size_t begin, size_t end, const 
             const float* A = reinterpret_cast<const float*>(px + 2 * size_t(ia[j]));
             const float* B = reinterpret_cast<const float*>(px + 2 * size_t(ib[j]));
             d[j] = _mm_sub_ps(_mm_load_ps(B), _mm_load_ps(A));
-            dv[j] = _mm_sub_ps(_mm_load_ps(B + 4), _mm_load_ps(A + 4));
+            if constexpr (velocities) dv[j] = _mm_sub_ps(_mm_load_ps(B + 4), _mm_load_ps(A + 4));
         }
         const __m128 dj[4] = {d[0], d[1], d[2], d[3]}; // one spring per vector, for the forces
         // Four springs side by side: dx = (d0.x, d1.x, d2.x, d3.x), ...
         _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
-        _MM_TRANSPOSE4_PS(dv[0], dv[1], dv[2], dv[3]);
         const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
         const __m128 len = _mm_sqrt_ps(len2);
         const __m128 valid = _mm_cmpgt_ps(len, tiny);
         const __m128 inv = _mm_div_ps(one, _mm_or_ps(_mm_andnot_ps(valid, one), _mm_and_ps(valid, len)));
-        const __m128 dvd =
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
-        const __m128 stretch = _mm_mul_ps(_mm_loadu_ps(k + i), _mm_sub_ps(len, _mm_loadu_ps(rest + i)));
-        const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + i), _mm_mul_ps(dvd, inv));
-        const __m128 f = _mm_and_ps(valid, _mm_mul_ps(_mm_add_ps(stretch, damp), inv));
+        __m128 along = _mm_setzero_ps(); // the force's size times L
+        if constexpr (T != SpringTerms::Damping)
+            along = _mm_mul_ps(_mm_loadu_ps(k + i), _mm_sub_ps(len, _mm_loadu_ps(rest + i)));
+        if constexpr (velocities) {
+            _MM_TRANSPOSE4_PS(dv[0], dv[1], dv[2], dv[3]);
+            const __m128 dvd =
+                _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
+            const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + i), _mm_mul_ps(dvd, inv));
+            along = T == SpringTerms::Both ? _mm_add_ps(along, damp) : damp;
+        }
+        const __m128 f = _mm_and_ps(valid, _mm_mul_ps(along, inv));
         const __m128 fs[4] = {_mm_mul_ps(_mm_shuffle_ps(f, f, 0x00), dj[0]), _mm_mul_ps(_mm_shuffle_ps(f, f, 0x55), dj[1]),
                               _mm_mul_ps(_mm_shuffle_ps(f, f, 0xAA), dj[2]), _mm_mul_ps(_mm_shuffle_ps(f, f, 0xFF), dj[3])};
         for (int j = 0; j < 4; ++j) {
@@ -106,7 +120,7 @@ inline void springForces(const SpringArrays& s, size_t begin, size_t end, const 
         }
     }
 #endif
-    for (; i < end; ++i) springForceScalar(s, i, xv, acc);
+    for (; i < end; ++i) springForceScalar<T>(s, i, xv, acc);
 }
 
 // Calls flagged(i, len2) for every spring i of [begin, end) whose squared length len2 is above

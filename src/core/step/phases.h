@@ -10,10 +10,11 @@ namespace clothtear {
 void phaseForces(const StepContext& ctx, Cloth& cloth, StepState& state);
 // springs.cpp: structural and bend-shear spring forces into the force buffers (explicit integrators).
 void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state);
-// springs.cpp: packs the particles' x and v as the kernels read them and adds every spring's force
-// with stiffness k and damping kd (arrays over the cache's entries) into the force buffers: the
-// springs phase's pass, and with the damping taken implicitly (time.damping) the integrator's damping pass (k = 0).
-void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, const float* k, const float* kd);
+// springs.cpp: packs the particles' x and v as the kernels read them and adds every spring's force,
+// or the one term `terms` asks for (spring_groups.h), into the force buffers: the springs phase's
+// pass, and with the damping taken implicitly (time.damping) its elastic pass and the integrator's
+// damping pass (which reads the packed copy the elastic pass and the integrator left).
+void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, SpringTerms terms);
 // material.model = kes (kes_forces.cpp): the tensile law on the structural springs and the
 // hysteretic hinges, on one thread's buffer; advances the hinges' memory (Cloth::bendMemory).
 void phaseSpringsKes(const StepContext& ctx, Cloth& cloth, StepState& state);

@@ -246,26 +246,34 @@ inline void add4(float* to, uint32_t p, uint32_t s, __m128 f, bool minus) {
     rmw(to + p + 4, _mm_unpackhi_ps(f, zero));
 }
 
-// The forces along the springs of four lanes, f (x, y, z) = (k (L - L0) + kd (v_b - v_a).n) n.
+// The forces along the springs of four lanes, f (x, y, z) = (k (L - L0) + kd (v_b - v_a).n) n, or
+// the one term T asks for.
+template <SpringTerms T>
 inline void forces4(const GroupArrays& A, uint32_t a, uint32_t b, uint32_t s, const float* rest, const float* k,
                     const float* kd, size_t e, __m128 out[3]) {
     const __m128 one = _mm_set1_ps(1.f);
-    __m128 d[3], dv[3];
-    for (int i = 0; i < 3; ++i) {
-        d[i] = _mm_sub_ps(load4(A.in[i], b, s), load4(A.in[i], a, s));
-        dv[i] = _mm_sub_ps(load4(A.in[3 + i], b, s), load4(A.in[3 + i], a, s));
-    }
+    __m128 d[3];
+    for (int i = 0; i < 3; ++i) d[i] = _mm_sub_ps(load4(A.in[i], b, s), load4(A.in[i], a, s));
     const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
     const __m128 len = _mm_sqrt_ps(len2);
     const __m128 valid = _mm_cmpgt_ps(len, _mm_set1_ps(1e-12f));
     const __m128 inv = _mm_div_ps(one, _mm_or_ps(_mm_andnot_ps(valid, one), _mm_and_ps(valid, len)));
-    const __m128 dvd = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
-    const __m128 stretch = _mm_mul_ps(_mm_loadu_ps(k + e), _mm_sub_ps(len, _mm_loadu_ps(rest + e)));
-    const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + e), _mm_mul_ps(dvd, inv));
-    const __m128 f = _mm_and_ps(valid, _mm_mul_ps(_mm_add_ps(stretch, damp), inv));
+    __m128 along = _mm_setzero_ps(); // the force's size times L
+    if constexpr (T != SpringTerms::Damping)
+        along = _mm_mul_ps(_mm_loadu_ps(k + e), _mm_sub_ps(len, _mm_loadu_ps(rest + e)));
+    if constexpr (T != SpringTerms::Elastic) {
+        __m128 dv[3];
+        for (int i = 0; i < 3; ++i) dv[i] = _mm_sub_ps(load4(A.in[3 + i], b, s), load4(A.in[3 + i], a, s));
+        const __m128 dvd =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
+        const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + e), _mm_mul_ps(dvd, inv));
+        along = T == SpringTerms::Both ? _mm_add_ps(along, damp) : damp;
+    }
+    const __m128 f = _mm_and_ps(valid, _mm_mul_ps(along, inv));
     for (int i = 0; i < 3; ++i) out[i] = _mm_mul_ps(f, d[i]);
 }
 
+template <SpringTerms T>
 void groupsSse2(const SpringGroup* groups, size_t g0, size_t g1, const float* rest, const float* k, const float* kd,
                 const GroupArrays& A) {
     ChainCarry carry;
@@ -273,8 +281,8 @@ void groupsSse2(const SpringGroup* groups, size_t g0, size_t g1, const float* re
         const SpringGroup& G = groups[g];
         const uint32_t s = G.stride;
         __m128 lo[3], hi[3]; // springs 0-3 and 4-7
-        forces4(A, G.a, G.b, s, rest, k, kd, G.entry, lo);
-        forces4(A, G.a + 4 * s, G.b + 4 * s, s, rest, k, kd, G.entry + 4, hi);
+        forces4<T>(A, G.a, G.b, s, rest, k, kd, G.entry, lo);
+        forces4<T>(A, G.a + 4 * s, G.b + 4 * s, s, rest, k, kd, G.entry + 4, hi);
         if (G.b - G.a != s) {
             carry.flush(A.out[0], A.out[1], A.out[2]);
             for (int i = 0; i < 3; ++i) {
@@ -328,6 +336,7 @@ __attribute__((target("avx2"))) inline void add8(float* to, uint32_t p, uint32_t
 }
 
 // The operations of groupsSse2 lane by lane, eight springs at once.
+template <SpringTerms T>
 __attribute__((target("avx2"))) void groupsAvx2(const SpringGroup* groups, size_t g0, size_t g1, const float* rest,
                                                 const float* k, const float* kd, const GroupArrays& A) {
     const __m256 one = _mm256_set1_ps(1.f), tiny = _mm256_set1_ps(1e-12f);
@@ -340,18 +349,23 @@ __attribute__((target("avx2"))) void groupsAvx2(const SpringGroup* groups, size_
         const __m256 dx = _mm256_sub_ps(load8(A.in[0], b, s), load8(A.in[0], a, s));
         const __m256 dy = _mm256_sub_ps(load8(A.in[1], b, s), load8(A.in[1], a, s));
         const __m256 dz = _mm256_sub_ps(load8(A.in[2], b, s), load8(A.in[2], a, s));
-        const __m256 dvx = _mm256_sub_ps(load8(A.in[3], b, s), load8(A.in[3], a, s));
-        const __m256 dvy = _mm256_sub_ps(load8(A.in[4], b, s), load8(A.in[4], a, s));
-        const __m256 dvz = _mm256_sub_ps(load8(A.in[5], b, s), load8(A.in[5], a, s));
         const __m256 len2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
         const __m256 len = _mm256_sqrt_ps(len2);
         const __m256 valid = _mm256_cmp_ps(len, tiny, _CMP_GT_OQ);
         const __m256 inv = _mm256_div_ps(one, _mm256_or_ps(_mm256_andnot_ps(valid, one), _mm256_and_ps(valid, len)));
-        const __m256 dvd =
-            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dvx, dx), _mm256_mul_ps(dvy, dy)), _mm256_mul_ps(dvz, dz));
-        const __m256 stretch = _mm256_mul_ps(_mm256_loadu_ps(k + e), _mm256_sub_ps(len, _mm256_loadu_ps(rest + e)));
-        const __m256 damp = _mm256_mul_ps(_mm256_loadu_ps(kd + e), _mm256_mul_ps(dvd, inv));
-        const __m256 f = _mm256_and_ps(valid, _mm256_mul_ps(_mm256_add_ps(stretch, damp), inv));
+        __m256 along = _mm256_setzero_ps(); // the force's size times L
+        if constexpr (T != SpringTerms::Damping)
+            along = _mm256_mul_ps(_mm256_loadu_ps(k + e), _mm256_sub_ps(len, _mm256_loadu_ps(rest + e)));
+        if constexpr (T != SpringTerms::Elastic) {
+            const __m256 dvx = _mm256_sub_ps(load8(A.in[3], b, s), load8(A.in[3], a, s));
+            const __m256 dvy = _mm256_sub_ps(load8(A.in[4], b, s), load8(A.in[4], a, s));
+            const __m256 dvz = _mm256_sub_ps(load8(A.in[5], b, s), load8(A.in[5], a, s));
+            const __m256 dvd =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dvx, dx), _mm256_mul_ps(dvy, dy)), _mm256_mul_ps(dvz, dz));
+            const __m256 damp = _mm256_mul_ps(_mm256_loadu_ps(kd + e), _mm256_mul_ps(dvd, inv));
+            along = T == SpringTerms::Both ? _mm256_add_ps(along, damp) : damp;
+        }
+        const __m256 f = _mm256_and_ps(valid, _mm256_mul_ps(along, inv));
         const __m256 fv[3] = {_mm256_mul_ps(f, dx), _mm256_mul_ps(f, dy), _mm256_mul_ps(f, dz)};
         if (b - a != s) {
             carry.flush(A.out[0], A.out[1], A.out[2]);
@@ -379,6 +393,7 @@ __attribute__((target("avx2"))) void groupsAvx2(const SpringGroup* groups, size_
 #endif
 
 // Without SSE2: springForceScalar's formula on each entry.
+template <SpringTerms T>
 void groupsScalar(const SpringGroup* groups, size_t g0, size_t g1, const float* rest, const float* k, const float* kd,
                   const GroupArrays& A) {
     const float* const* c = A.in;
@@ -391,8 +406,13 @@ void groupsScalar(const SpringGroup* groups, size_t g0, size_t g1, const float* 
             const float len = std::sqrt(dx * dx + dy * dy + dz * dz);
             if (!(len > 1e-12f)) continue;
             const float inv = 1.f / len;
-            const float dvd = ((c[3][b] - c[3][a]) * dx + (c[4][b] - c[4][a]) * dy + (c[5][b] - c[5][a]) * dz) * inv;
-            const float f = (k[e] * (len - rest[e]) + kd[e] * dvd) * inv;
+            float along = 0.f;
+            if constexpr (T != SpringTerms::Damping) along = k[e] * (len - rest[e]);
+            if constexpr (T != SpringTerms::Elastic) {
+                const float dvd = ((c[3][b] - c[3][a]) * dx + (c[4][b] - c[4][a]) * dy + (c[5][b] - c[5][a]) * dz) * inv;
+                along = T == SpringTerms::Both ? along + kd[e] * dvd : kd[e] * dvd;
+            }
+            const float f = along * inv;
             const float fv[3] = {f * dx, f * dy, f * dz};
             for (int i = 0; i < 3; ++i) {
                 A.out[i][a] += fv[i];
@@ -402,21 +422,32 @@ void groupsScalar(const SpringGroup* groups, size_t g0, size_t g1, const float* 
     }
 }
 
+template <SpringTerms T>
+void groupsWith(GroupKernel kernel, const SpringGroup* groups, size_t g0, size_t g1, const float* rest, const float* k,
+                const float* kd, const GroupArrays& A) {
+    switch (kernel) {
+#if CLOTHTEAR_GROUPS_AVX2
+    case GroupKernel::Avx2: groupsAvx2<T>(groups, g0, g1, rest, k, kd, A); return;
+#endif
+#if defined(__SSE2__)
+    case GroupKernel::Sse2: groupsSse2<T>(groups, g0, g1, rest, k, kd, A); return;
+#endif
+    default: groupsScalar<T>(groups, g0, g1, rest, k, kd, A); return;
+    }
+}
+
 } // namespace
 
-void springForcesGrouped(GroupKernel kernel, const SpringGroup* groups, size_t g0, size_t g1, const float* rest,
-                         const float* k, const float* kd, const ComponentArrays& particles, ComponentArrays& forces) {
+void springForcesGrouped(GroupKernel kernel, SpringTerms terms, const SpringGroup* groups, size_t g0, size_t g1,
+                         const float* rest, const float* k, const float* kd, const ComponentArrays& particles,
+                         ComponentArrays& forces) {
     GroupArrays A;
     for (int i = 0; i < 6; ++i) A.in[i] = particles.component(i);
     for (int i = 0; i < 3; ++i) A.out[i] = forces.component(i);
-    switch (kernel) {
-#if CLOTHTEAR_GROUPS_AVX2
-    case GroupKernel::Avx2: groupsAvx2(groups, g0, g1, rest, k, kd, A); return;
-#endif
-#if defined(__SSE2__)
-    case GroupKernel::Sse2: groupsSse2(groups, g0, g1, rest, k, kd, A); return;
-#endif
-    default: groupsScalar(groups, g0, g1, rest, k, kd, A); return;
+    switch (terms) {
+    case SpringTerms::Both: groupsWith<SpringTerms::Both>(kernel, groups, g0, g1, rest, k, kd, A); return;
+    case SpringTerms::Elastic: groupsWith<SpringTerms::Elastic>(kernel, groups, g0, g1, rest, k, kd, A); return;
+    case SpringTerms::Damping: groupsWith<SpringTerms::Damping>(kernel, groups, g0, g1, rest, k, kd, A); return;
     }
 }
 

@@ -66,7 +66,15 @@ SpringOrder groupSprings(const std::vector<Spring>& springs, size_t count, size_
 // `forces`. rest, k and kd are the cache's arrays, indexed by entry. The SSE2 and AVX2 kernels give
 // the same bits: the same operations lane by lane, no fused multiply-add, and one addition per
 // group into each float it touches, in group order.
-void springForcesGrouped(GroupKernel kernel, const SpringGroup* groups, size_t g0, size_t g1, const float* rest,
-                         const float* k, const float* kd, const ComponentArrays& particles, ComponentArrays& forces);
+// Which terms of the spring force f = (k (L - L0) + kd (v_b - v_a).n) n a pass computes. With the
+// damping taken implicitly (time.damping, integrate.cpp) a sub-step runs two passes, the elastic
+// one on the positions and the damping one on the velocities the other forces gave; each leaves
+// out the other's loads and arithmetic (the velocities, or the rest lengths and stiffnesses). A
+// term left out adds exactly what a zero k or kd would have added (a signed zero).
+enum class SpringTerms : uint8_t { Both, Elastic, Damping };
+
+void springForcesGrouped(GroupKernel kernel, SpringTerms terms, const SpringGroup* groups, size_t g0, size_t g1,
+                         const float* rest, const float* k, const float* kd, const ComponentArrays& particles,
+                         ComponentArrays& forces);
 
 } // namespace clothtear

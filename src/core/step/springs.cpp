@@ -83,6 +83,21 @@ void packParticles(size_t b, size_t e, size_t n, const Vec3* x, const Vec3* v, P
     }
 }
 
+// The packed velocities of particles [b, e) into the groups' vx, vy, vz arrays (`components`).
+void packVelocities(size_t b, size_t e, const PackedParticle* packed, float* const* components) {
+    size_t p = b;
+#if defined(__SSE2__)
+    for (; p + 4 <= e; p += 4) {
+        __m128 V[4];
+        for (int j = 0; j < 4; ++j) V[j] = _mm_load_ps(packed[p + j].v);
+        _MM_TRANSPOSE4_PS(V[0], V[1], V[2], V[3]);
+        for (int c = 0; c < 3; ++c) _mm_storeu_ps(components[c] + p, V[c]);
+    }
+#endif
+    for (; p < e; ++p)
+        for (int c = 0; c < 3; ++c) components[c][p] = packed[p].v[c];
+}
+
 // Bend-shear springs with the same two ends and the same rest length, merged into one entry of the
 // cache: a grid's bend-shear springs that span two columns or two rows come twice (the two edges
 // whose opposite corners are the same two particles; a third of the bend-shear springs of the 128 x
@@ -252,17 +267,15 @@ void refreshSpringCache(const StepContext& ctx, const Cloth& cloth, StepState& s
     fill(cloth.bends, ns, ns + nb, m.bendStiffness, m.bendDamping);
     if (guard) guardParticleBudget(cloth, S, dt, ctx.dragPerMass, ctx.implicitDamping);
     // The damping taken implicitly (integrate.cpp): each particle's summed damping, the
-    // diagonal its Jacobi step divides by, and zeros for the passes that leave k or kd out.
+    // diagonal its Jacobi step divides by.
     S.implicitDamping = ctx.implicitDamping;
     S.dampingSum.clear();
-    S.zeros.clear();
     if (ctx.implicitDamping) {
         S.dampingSum.assign(cloth.particleCount(), 0.f);
         for (size_t e = 0; e < ns + nb; ++e) {
             S.dampingSum[S.a16[e] / 16] += S.kd[e];
             S.dampingSum[S.b16[e] / 16] += S.kd[e];
         }
-        S.zeros.assign(ns + nb, 0.f);
     }
     // What the guard took from the material, for the report and the stats pane.
     size_t capped = 0;
@@ -334,10 +347,10 @@ void phaseSprings(const StepContext& ctx, Cloth& cloth, StepState& state) {
     }
     // With the damping taken implicitly the integrator runs a second pass for it on the velocities
     // the other forces gave (integrate.cpp): this one leaves it out.
-    springForcePass(ctx, cloth, state, S.k.data(), S.implicitDamping ? S.zeros.data() : S.kd.data());
+    springForcePass(ctx, cloth, state, S.implicitDamping ? SpringTerms::Elastic : SpringTerms::Both);
 }
 
-void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, const float* k, const float* kd) {
+void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, SpringTerms terms) {
     SpringCache& S = state.springs;
     const size_t n = cloth.particleCount();
     const size_t ns = S.structural, nb = S.a16.size() - S.structural;
@@ -382,7 +395,7 @@ void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, con
         }
     }
     for (int t = 0; t < nt; ++t) state.threads.range[t] = S.threadRange[t];
-    const SpringArrays arrays{S.a16.data(), S.b16.data(), S.rest.data(), k, kd};
+    const SpringArrays arrays = springArraysOf(S);
     const Vec3* x = cloth.x.data();
     const Vec3* v = cloth.v.data();
     PackedParticle* packed = state.packed.data();
@@ -400,18 +413,29 @@ void springForcePass(const StepContext& ctx, Cloth& cloth, StepState& state, con
         for (ComponentArrays& f : state.threads.groupForces) f.resize(n, 3);
     }
     state.threads.groupForcesSet = grouped;
+    // The damping pass (integrate.cpp) runs on the positions the elastic pass packed and on the
+    // velocities the integrator's first stage wrote into the packed copy (nothing moves a particle
+    // between them): only the groups' velocity components are copied anew.
+    const bool dampingPass = terms == SpringTerms::Damping;
     parallelRegion(ns + nb, nt, [&](int t, int nt2) {
         const Chunk pc = chunkOf(n, t, nt2);
-        packParticles(pc.begin, pc.end, n, x, v, packed, grouped ? components : nullptr);
+        if (!dampingPass) packParticles(pc.begin, pc.end, n, x, v, packed, grouped ? components : nullptr);
+        else if (grouped) packVelocities(pc.begin, pc.end, packed, components + 3);
         parallelBarrier(nt2);
         Eigen::Vector4f* acc = state.threads.acc[t].data();
         forShare(
             t,
             [&](size_t g0, size_t g1) {
-                springForcesGrouped(S.groupKernel, S.groups.data(), g0, g1, S.rest.data(), k, kd,
-                                    state.components, state.threads.groupForces[size_t(t)]);
+                springForcesGrouped(S.groupKernel, terms, S.groups.data(), g0, g1, S.rest.data(), S.k.data(),
+                                    S.kd.data(), state.components, state.threads.groupForces[size_t(t)]);
             },
-            [&](size_t e0, size_t e1) { springForces(arrays, e0, e1, packed, acc); });
+            [&](size_t e0, size_t e1) {
+                switch (terms) {
+                case SpringTerms::Both: springForces<SpringTerms::Both>(arrays, e0, e1, packed, acc); break;
+                case SpringTerms::Elastic: springForces<SpringTerms::Elastic>(arrays, e0, e1, packed, acc); break;
+                case SpringTerms::Damping: springForces<SpringTerms::Damping>(arrays, e0, e1, packed, acc); break;
+                }
+            });
     });
 }
 

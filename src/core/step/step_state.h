@@ -58,9 +58,9 @@ struct SpringCache {
     bool perSpringCaps = false;      // built with the per-spring caps (StepContext::perSpringCaps)
     // Built for the damping taken implicitly (StepContext::implicitDamping, integrate.cpp):
     // per particle the sum of its entries' kd (N s/m; an upper bound of its damping block's largest
-    // eigenvalue), and zeros as long as the entries (the k or kd of a pass that leaves them out).
+    // eigenvalue).
     bool implicitDamping = false;
-    std::vector<float> dampingSum, zeros;
+    std::vector<float> dampingSum;
     size_t structural = 0;           // entries [0, structural) are structural, the rest bend-shear
     // Groups of eight evenly spaced springs (spring_groups.h) and the bands of each kind (entries
     // and group indices absolute): groups and bands [0, structural*) are structural, the rest
