@@ -28,6 +28,10 @@ struct StepProfile {
     std::array<double, int(Phase::Count)> ms{};     // accumulated milliseconds per phase
     std::array<uint64_t, int(Phase::Count)> runs{}; // how often each phase was entered
     uint64_t substeps = 0;
+    // Sub-steps that took the springs' damping implicitly (time.damping; World::guardSubsteps), and
+    // whether the last frame did.
+    uint64_t dampingImplicitSubsteps = 0;
+    bool dampingImplicit = false;
     uint64_t solverIterations = 0; // implicit Euler: conjugate-gradient iterations, summed
     // Length limit not converged: sub-steps whose last allowed pass (limit.iterations) still
     // corrected springs, and those springs, summed. The cloth then ends the sub-step stretched past
@@ -105,8 +109,22 @@ double stableStepEstimate(const Cloth& cloth, const Settings& settings);
 // time.damping: then only the stiffness bounds the step).
 double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction,
                          bool interacting = false, bool dampingFree = false);
+// guardStepEstimate with the springs' damping and without it (dampingFree), from one walk over the
+// springs: time.damping = auto compares the two (World::step).
+struct GuardSteps {
+    double withDamping, dampingFree; // s
+};
+GuardSteps guardStepEstimates(const Cloth& cloth, const Settings& settings, double lightMassFraction,
+                              bool interacting = false);
 // The fraction World::step passes: the lightest 1% of the mass may get capped springs.
 inline constexpr double kGuardLightMass = 0.01;
+// What a sub-step with the damping taken implicitly (a second spring pass that reads only the
+// velocities, a second integrator stage) costs in sub-steps with it explicit: time.damping = auto
+// takes it implicitly where that many times its sub-steps are fewer than the explicit damping's.
+// Instructions per sub-step (callgrind, one thread, the curtain at rest): 1.55 and 1.56 at 0.4 m,
+// 33 and 65 a side, 1.49 / 1.48 / 1.575 at 2 m, 40 / 129 / 257; rounded up, so that auto turns to it
+// only where it is the cheaper step (bench/README.md, "The springs' damping and the guard's step").
+inline constexpr double kImplicitDampingCost = 1.6;
 
 // Per particle, the summed stiffness k (N/m) and damping kd (N s/m) of the structural and
 // bend-shear springs touching it, as the material asks for them (before the guard caps any): the

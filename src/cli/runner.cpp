@@ -108,6 +108,9 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"limit_capped_substeps", w.profile.limitCapped},
         {"limit_capped_springs", w.profile.limitCappedSprings},
         {"substeps_run", w.profile.substeps},
+        // of them with the springs' damping taken implicitly (time.damping), and the last frame's way
+        {"damping_implicit_substeps", w.profile.dampingImplicitSubsteps},
+        {"damping_implicit", w.profile.dampingImplicit},
         {"limit_passes", w.profile.limitPasses}, // passes of the length limit, summed over sub-steps
         // sub-steps whose limit skipped the tethers / the listing after them (exact skips, limit.cpp)
         {"limit_tethers_skipped", w.profile.limitTethersSkipped},

@@ -85,8 +85,13 @@ enum class StepBound {
 // step; it is 1.5-1.9 x shorter than the budget's (76 instead of 48 sub-steps a frame at 128 x 128)
 // and kept where the ball and drag outcomes were measured and are tested (bench/README.md, "The
 // guard's step from the particle budget").
-std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const Settings& settings, StepBound bound,
-                                                      bool dampingFree) {
+using StepList = std::vector<std::pair<double, double>>;
+struct ParticleSteps {
+    StepList steps;     // with the springs' damping, or without it where dampingFree asked
+    StepList freeSteps; // with alsoDampingFree: the same particles' steps without the damping
+};
+ParticleSteps stepsAndMasses(const Cloth& cloth, const Settings& settings, StepBound bound, bool dampingFree,
+                             bool alsoDampingFree = false) {
     const MaterialSettings& m = settings.material;
     const size_t n = cloth.particleCount();
     std::vector<double> k, kd;
@@ -94,7 +99,8 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
     // Damping taken implicitly (time.damping) is stable at any step: only the stiffness bounds it
     // (integrate.cpp).
     if (dampingFree) std::fill(kd.begin(), kd.end(), 0.0);
-    std::vector<double> springStep(n, std::numeric_limits<double>::infinity());
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> springStep(n, inf), springStepFree;
     if (bound == StepBound::SpringCaps) {
         // A particle's step is the shortest of its springs', sqrt(cap / kw) and capD / kdw; both
         // fall as kw and kdw grow and rounding keeps that order, so it is the step of its largest
@@ -113,57 +119,46 @@ std::vector<std::pair<double, double>> stepsAndMasses(const Cloth& cloth, const 
         const AskedStiffness asked = structuralAsked(settings);
         add(cloth.springs, asked.stiffness, dampingFree ? 0.0 : asked.damping);
         if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, dampingFree ? 0.0 : m.bendDamping);
+        if (alsoDampingFree) springStepFree.assign(n, inf);
         for (Index p = 0; p < n; ++p) {
             if (kwMax[p] > 0) springStep[p] = std::sqrt(double(kStiffnessCap) / kwMax[p]);
+            if (alsoDampingFree) springStepFree[p] = springStep[p];
             if (kdwMax[p] > 0) springStep[p] = std::min(springStep[p], double(kDampingCap) / kdwMax[p]);
         }
+    } else if (alsoDampingFree) {
+        springStepFree.assign(n, inf);
     }
     // The guard's budget and the air drag's share of it (guardParticleBudget counts it too).
     const bool budgeted = bound == StepBound::Budget;
     const double budget = budgeted ? double(kParticleBudget) : 1.0;
     const double drag = budgeted ? double(airDragPerMass(settings, cloth.density)) : 0.0;
-    std::vector<std::pair<double, double>> out;
-    out.reserve(n);
+    // (A / 2) dt^2 + B dt = budget
+    auto stepOf = [&](double A, double B, double step) {
+        if (A > 0) return std::min(step, (std::sqrt(B * B + 2 * A * budget) - B) / A);
+        if (B > 0) return std::min(step, budget / B);
+        return step;
+    };
+    ParticleSteps out;
+    out.steps.reserve(n);
+    if (alsoDampingFree) out.freeSteps.reserve(n);
     for (Index p = 0; p < n; ++p) {
         const double w = cloth.invMass[p];
         if (w == 0.0)
             continue;
-        // (A / 2) dt^2 + B dt = budget
         const double A = k[p] * w, B = kd[p] * w + drag;
-        double step = springStep[p];
-        if (A > 0)
-            step = std::min(step, (std::sqrt(B * B + 2 * A * budget) - B) / A);
-        else if (B > 0)
-            step = std::min(step, budget / B);
-        out.emplace_back(step, 1.0 / w);
+        out.steps.emplace_back(stepOf(A, B, springStep[p]), 1.0 / w);
+        if (alsoDampingFree) out.freeSteps.emplace_back(stepOf(A, drag, springStepFree[p]), 1.0 / w);
     }
     return out;
 }
 
-} // namespace
-
-double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
-    if (!isExplicit(settings.time.integrator))
-        return std::numeric_limits<double>::infinity();
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable, implicitDampingAlways(settings)))
-        best = std::min(best, step);
-    return best;
-}
-
-double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction, bool interacting,
-                         bool dampingFree) {
-    if (!isExplicit(settings.time.integrator))
-        return std::numeric_limits<double>::infinity();
-    const bool caps = interacting || settings.material.model == MaterialModel::Kes;
-    std::vector<std::pair<double, double>> steps =
-        stepsAndMasses(cloth, settings, caps ? StepBound::SpringCaps : StepBound::Budget, dampingFree);
+// The step every particle meets but the ones that need a shorter one and together hold at most
+// lightMassFraction of the mass: walk up the shortest steps until their mass passes it. (The total
+// is summed in particle order; a full sort summed it in step order, which differs in the last bits,
+// so the answer could differ only where the share's edge falls within that rounding.)
+double stepBeyondTheLightest(StepList& steps, double lightMassFraction) {
     if (steps.empty())
         return std::numeric_limits<double>::infinity();
-    // The step every particle meets but the ones that need a shorter one and together hold at most
-    // lightMassFraction of the mass: walk up the shortest steps until their mass passes it. (The
-    // total is summed in particle order; a full sort summed it in step order, which differs in the
-    // last bits, so the answer could differ only where the share's edge falls within that rounding.)
     double freeMass = 0;
     for (const auto& sm : steps)
         freeMass += sm.second;
@@ -185,6 +180,34 @@ double guardStepEstimate(const Cloth& cloth, const Settings& settings, double li
             return steps.back().first;
         prefix = std::min(steps.size(), 2 * prefix);
     }
+}
+
+} // namespace
+
+double stableStepEstimate(const Cloth& cloth, const Settings& settings) {
+    if (!isExplicit(settings.time.integrator))
+        return std::numeric_limits<double>::infinity();
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& [step, mass] : stepsAndMasses(cloth, settings, StepBound::Stable, implicitDampingAlways(settings)).steps)
+        best = std::min(best, step);
+    return best;
+}
+
+double guardStepEstimate(const Cloth& cloth, const Settings& settings, double lightMassFraction, bool interacting,
+                         bool dampingFree) {
+    if (!isExplicit(settings.time.integrator))
+        return std::numeric_limits<double>::infinity();
+    const bool caps = interacting || settings.material.model == MaterialModel::Kes;
+    ParticleSteps p = stepsAndMasses(cloth, settings, caps ? StepBound::SpringCaps : StepBound::Budget, dampingFree);
+    return stepBeyondTheLightest(p.steps, lightMassFraction);
+}
+
+GuardSteps guardStepEstimates(const Cloth& cloth, const Settings& settings, double lightMassFraction, bool interacting) {
+    if (!isExplicit(settings.time.integrator))
+        return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    const bool caps = interacting || settings.material.model == MaterialModel::Kes;
+    ParticleSteps p = stepsAndMasses(cloth, settings, caps ? StepBound::SpringCaps : StepBound::Budget, false, true);
+    return {stepBeyondTheLightest(p.steps, lightMassFraction), stepBeyondTheLightest(p.freeSteps, lightMassFraction)};
 }
 
 } // namespace clothtear

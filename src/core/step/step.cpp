@@ -134,6 +134,8 @@ void World::step() {
     // against the sub-step") and were measured and are tested at that step.
     state.interacting = ballNearCloth(*this) || driversMove(drivers);
     frameSubsteps = guardSubsteps();
+    profile.dampingImplicit = implicitDampingAlways(settings) || state.dampingImplicit; // as makeStepContext
+    if (profile.dampingImplicit) profile.dampingImplicitSubsteps += uint64_t(frameSubsteps);
     state.substepsNow = frameSubsteps;
     for (int i = 0; i < frameSubsteps; ++i) substep();
     state.substepsNow = 0;
@@ -159,10 +161,12 @@ void World::step() {
 // springs are capped instead, and the limit holds their length.
 //
 // The springs' damping (time.damping): taken explicitly it bounds the step by m / sum(kd), which
-// shrinks as the spacing squared; taken implicitly only the stiffness does. With auto the guard
-// takes it implicitly where the explicit damping's step would be past time.max_substeps (so the
-// guard would soften the cloth) and the stiffness's step is not: the material as set, at a second
-// spring pass a sub-step (bench/README.md, "The springs' damping and the guard's step").
+// shrinks as the spacing squared; taken implicitly only the stiffness does, at a second spring pass
+// and integrator stage a sub-step (kImplicitDampingCost). With auto the guard takes it implicitly
+// where the explicit damping's step would be past time.max_substeps (so the guard would soften the
+// cloth) and the stiffness's step is not, and where the implicit sub-steps cost less than the
+// explicit ones; both keep the material as set (bench/README.md, "The springs' damping and the
+// guard's step").
 int World::guardSubsteps() {
     const TimeSettings& T = settings.time;
     StepState& state = *state_;
@@ -175,26 +179,41 @@ int World::guardSubsteps() {
         G.stamp.set(now);
     }
     // Each estimate only when a frame needs it: while a hand tears the cloth every tear changes the
-    // topology, and the budget's step, unused then, was half the guard's cost.
-    auto step = [&](bool dampingFree) {
-        const bool caps = state.interacting;
-        bool& known = dampingFree ? (caps ? G.capsFreeKnown : G.stableFreeKnown) : (caps ? G.capsKnown : G.stableKnown);
-        double& value = dampingFree ? (caps ? G.capsFreeStep : G.stableFreeStep) : (caps ? G.capsStep : G.stableStep);
-        if (!known) {
-            value = guardStepEstimate(cloth, settings, kGuardLightMass, caps, dampingFree);
-            known = true;
+    // topology, and the budget's step, unused then, was half the guard's cost. Auto wants both of
+    // one kind, from one walk over the springs (guardStepEstimates).
+    const bool caps = state.interacting;
+    bool& known = caps ? G.capsKnown : G.stableKnown;
+    bool& freeKnown = caps ? G.capsFreeKnown : G.stableFreeKnown;
+    double& withDamping = caps ? G.capsStep : G.stableStep;
+    double& dampingFree = caps ? G.capsFreeStep : G.stableFreeStep;
+    const bool autoDamping = implicitDampingAllowed(settings) && T.damping == DampingMode::Auto;
+    auto frameSteps = [&](double step) { return std::ceil(double(T.frameDt) / step); };
+    auto within = [&](double need) { return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need)); };
+    if (!autoDamping) {
+        const bool free = implicitDampingAlways(settings);
+        bool& k = free ? freeKnown : known;
+        double& value = free ? dampingFree : withDamping;
+        if (!k) {
+            value = guardStepEstimate(cloth, settings, kGuardLightMass, caps, free);
+            k = true;
         }
-        return std::ceil(double(T.frameDt) / value);
-    };
-    double need = step(implicitDampingAlways(settings));
-    if (implicitDampingAllowed(settings) && T.damping == DampingMode::Auto && need > double(T.maxSubsteps)) {
-        const double free = step(true);
-        if (free <= double(T.maxSubsteps)) {
-            state.dampingImplicit = true;
-            need = free;
-        }
+        return within(frameSteps(value));
     }
-    return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need));
+    if (!known || !freeKnown) {
+        const GuardSteps both = guardStepEstimates(cloth, settings, kGuardLightMass, caps);
+        withDamping = both.withDamping;
+        dampingFree = both.dampingFree;
+        known = freeKnown = true;
+    }
+    const double need = frameSteps(withDamping), free = frameSteps(dampingFree);
+    const double max = double(T.maxSubsteps), floor = double(T.substeps);
+    const bool softens = need > max;
+    const bool cheaper = kImplicitDampingCost * std::max(floor, free) < std::max(floor, need);
+    if (free <= max && (softens || cheaper)) {
+        state.dampingImplicit = true;
+        return within(free);
+    }
+    return within(need);
 }
 
 void World::substep() {
