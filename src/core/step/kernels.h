@@ -95,6 +95,7 @@ inline void springForces(const SpringArrays& s, size_t begin, size_t end, const 
         const __m128 dj[4] = {d[0], d[1], d[2], d[3]}; // one spring per vector, for the forces
         // Four springs side by side: dx = (d0.x, d1.x, d2.x, d3.x), ...
         _MM_TRANSPOSE4_PS(d[0], d[1], d[2], d[3]);
+        if constexpr (velocities) _MM_TRANSPOSE4_PS(dv[0], dv[1], dv[2], dv[3]);
         const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
         const __m128 len = _mm_sqrt_ps(len2);
         const __m128 valid = _mm_cmpgt_ps(len, tiny);
@@ -103,7 +104,6 @@ inline void springForces(const SpringArrays& s, size_t begin, size_t end, const 
         if constexpr (T != SpringTerms::Damping)
             along = _mm_mul_ps(_mm_loadu_ps(k + i), _mm_sub_ps(len, _mm_loadu_ps(rest + i)));
         if constexpr (velocities) {
-            _MM_TRANSPOSE4_PS(dv[0], dv[1], dv[2], dv[3]);
             const __m128 dvd =
                 _mm_add_ps(_mm_add_ps(_mm_mul_ps(dv[0], d[0]), _mm_mul_ps(dv[1], d[1])), _mm_mul_ps(dv[2], d[2]));
             const __m128 damp = _mm_mul_ps(_mm_loadu_ps(kd + i), _mm_mul_ps(dvd, inv));
