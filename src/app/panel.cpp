@@ -352,14 +352,19 @@ void drawStatsPane(AppState& st, const World& world) {
     else if (st.clock.slowedDown)
         ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "slower than real time (%.0f%%)",
                            100.0 * s.simFps * world.settings.time.frameDt);
-    ImGui::Text("step %.2f ms  (%d sub-steps%s)", s.msPerStep, world.frameSubsteps,
-                world.profile.dampingImplicit ? ", damping implicit" : "");
+    ImGui::Text("step %.2f ms  (%d sub-steps)", s.msPerStep, world.frameSubsteps);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Sub-steps of the last frame: the stability guard takes as many as the material\n"
                           "needs to keep the stiffness you set (a finer or smaller cloth needs more),\n"
-                          "up to time.max_substeps. Where the springs' damping alone would need more than\n"
-                          "that, or more than the implicit damping's dearer sub-steps cost, it is taken\n"
-                          "implicitly instead (time.damping = auto; \"damping implicit\").");
+                          "up to time.max_substeps.");
+    // On its own line: appended to the one above it ran past the pane's edge.
+    if (world.profile.dampingImplicit) {
+        ImGui::TextDisabled("damping taken implicitly");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The springs' damping alone would need more sub-steps than time.max_substeps,\n"
+                              "or more than the implicit damping's dearer sub-steps cost: it is taken\n"
+                              "implicitly (time.damping = auto), stable at the stiffness's step.");
+    }
     // A capped spring may keep all of its stiffness and lose damping only (the light particles a
     // ball's tears make): "at 100% stiffness" under "softer than set" read as a contradiction.
     if (world.guardCappedSprings > 0 && world.guardStiffnessKept < 0.995f)
