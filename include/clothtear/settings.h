@@ -16,8 +16,9 @@ inline bool isExplicit(Integrator i) { return i == Integrator::SemiImplicitEuler
 enum class AirModel : int32_t { Drag = 0, Keserica = 1 };
 // How semi-implicit Euler takes the springs' damping (time.damping; integrate.cpp): explicitly, or
 // implicitly (one Jacobi step after the other forces: stable at any step, a second spring pass),
-// or auto: implicitly only where the explicit damping would make the stability guard soften the
-// material (its step past time.max_substeps) and the implicit one would not.
+// or auto: implicitly where the explicit damping would make the stability guard soften the
+// material (its step past time.max_substeps) and the implicit one would not, or where the implicit
+// damping's sub-steps cost less (kImplicitDampingCost, world.h).
 enum class DampingMode : int32_t { Explicit = 0, Implicit = 1, Auto = 2 };
 // How the length limit's passes apply their corrections (src/core/step/limit.cpp):
 //   GaussSeidel  in place, spring after spring, in one canonical order (the scan's)

@@ -100,7 +100,7 @@ ParticleSteps stepsAndMasses(const Cloth& cloth, const Settings& settings, StepB
     // (integrate.cpp).
     if (dampingFree) std::fill(kd.begin(), kd.end(), 0.0);
     const double inf = std::numeric_limits<double>::infinity();
-    std::vector<double> springStep(n, inf), springStepFree;
+    std::vector<double> springStep(n, inf), springStepFree(alsoDampingFree ? n : 0, inf);
     if (bound == StepBound::SpringCaps) {
         // A particle's step is the shortest of its springs', sqrt(cap / kw) and capD / kdw; both
         // fall as kw and kdw grow and rounding keeps that order, so it is the step of its largest
@@ -119,14 +119,11 @@ ParticleSteps stepsAndMasses(const Cloth& cloth, const Settings& settings, StepB
         const AskedStiffness asked = structuralAsked(settings);
         add(cloth.springs, asked.stiffness, dampingFree ? 0.0 : asked.damping);
         if (m.model == MaterialModel::Linear) add(cloth.bends, m.bendStiffness, dampingFree ? 0.0 : m.bendDamping);
-        if (alsoDampingFree) springStepFree.assign(n, inf);
         for (Index p = 0; p < n; ++p) {
             if (kwMax[p] > 0) springStep[p] = std::sqrt(double(kStiffnessCap) / kwMax[p]);
             if (alsoDampingFree) springStepFree[p] = springStep[p];
             if (kdwMax[p] > 0) springStep[p] = std::min(springStep[p], double(kDampingCap) / kdwMax[p]);
         }
-    } else if (alsoDampingFree) {
-        springStepFree.assign(n, inf);
     }
     // The guard's budget and the air drag's share of it (guardParticleBudget counts it too).
     const bool budgeted = bound == StepBound::Budget;

@@ -134,7 +134,7 @@ void World::step() {
     // against the sub-step") and were measured and are tested at that step.
     state.interacting = ballNearCloth(*this) || driversMove(drivers);
     frameSubsteps = guardSubsteps();
-    profile.dampingImplicit = implicitDampingAlways(settings) || state.dampingImplicit; // as makeStepContext
+    profile.dampingImplicit = implicitDampingNow(settings, state.dampingImplicit);
     if (profile.dampingImplicit) profile.dampingImplicitSubsteps += uint64_t(frameSubsteps);
     state.substepsNow = frameSubsteps;
     for (int i = 0; i < frameSubsteps; ++i) substep();
@@ -175,37 +175,34 @@ int World::guardSubsteps() {
     const Revisions& now = state.revisions.observe(*this); // the estimate does not depend on dt
     GuardCache& G = state.guard;
     if (!G.stamp.fresh(now, GuardCache::kDeps)) {
-        G.stableKnown = G.capsKnown = G.stableFreeKnown = G.capsFreeKnown = false;
+        G.resting = G.interacting = {};
         G.stamp.set(now);
     }
     // Each estimate only when a frame needs it: while a hand tears the cloth every tear changes the
     // topology, and the budget's step, unused then, was half the guard's cost. Auto wants both of
     // one kind, from one walk over the springs (guardStepEstimates).
     const bool caps = state.interacting;
-    bool& known = caps ? G.capsKnown : G.stableKnown;
-    bool& freeKnown = caps ? G.capsFreeKnown : G.stableFreeKnown;
-    double& withDamping = caps ? G.capsStep : G.stableStep;
-    double& dampingFree = caps ? G.capsFreeStep : G.stableFreeStep;
+    GuardCache::Estimate& E = caps ? G.interacting : G.resting;
     const bool autoDamping = implicitDampingAllowed(settings) && T.damping == DampingMode::Auto;
     auto frameSteps = [&](double step) { return std::ceil(double(T.frameDt) / step); };
     auto within = [&](double need) { return need > double(T.maxSubsteps) ? T.maxSubsteps : std::max(T.substeps, int(need)); };
     if (!autoDamping) {
         const bool free = implicitDampingAlways(settings);
-        bool& k = free ? freeKnown : known;
-        double& value = free ? dampingFree : withDamping;
-        if (!k) {
+        bool& known = free ? E.freeKnown : E.known;
+        double& value = free ? E.freeStep : E.step;
+        if (!known) {
             value = guardStepEstimate(cloth, settings, kGuardLightMass, caps, free);
-            k = true;
+            known = true;
         }
         return within(frameSteps(value));
     }
-    if (!known || !freeKnown) {
+    if (!E.known || !E.freeKnown) {
         const GuardSteps both = guardStepEstimates(cloth, settings, kGuardLightMass, caps);
-        withDamping = both.withDamping;
-        dampingFree = both.dampingFree;
-        known = freeKnown = true;
+        E.step = both.withDamping;
+        E.freeStep = both.dampingFree;
+        E.known = E.freeKnown = true;
     }
-    const double need = frameSteps(withDamping), free = frameSteps(dampingFree);
+    const double need = frameSteps(E.step), free = frameSteps(E.freeStep);
     const double max = double(T.maxSubsteps), floor = double(T.substeps);
     const bool softens = need > max;
     const bool cheaper = kImplicitDampingCost * std::max(floor, free) < std::max(floor, need);

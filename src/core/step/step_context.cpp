@@ -60,7 +60,7 @@ StepContext makeStepContext(World& w, StepState& state, float dt) {
 
     c.dragPerMass = guardDragPerMass(S, w.cloth.density, dt);
     c.perSpringCaps = S.time.stabilityGuard && (S.material.model == MaterialModel::Kes || state.interacting);
-    c.implicitDamping = implicitDampingAlways(S) || (implicitDampingAllowed(S) && state.dampingImplicit);
+    c.implicitDamping = implicitDampingNow(S, state.dampingImplicit);
     c.keep = S.air.model == AirModel::Keserica ? 1.f - S.air.kesericaFactor : 1.f;
 
     c.balls = &w.balls;

@@ -94,6 +94,12 @@ inline bool implicitDampingAllowed(const Settings& s) {
 inline bool implicitDampingAlways(const Settings& s) {
     return implicitDampingAllowed(s) && s.time.damping == DampingMode::Implicit;
 }
+// ...and taken implicitly now: always, or where the guard chose it under auto (guardChose:
+// StepState::dampingImplicit, World::guardSubsteps; checked against the settings again, which a
+// user may change between a frame's start and a sub-step run on its own).
+inline bool implicitDampingNow(const Settings& s, bool guardChose) {
+    return implicitDampingAlways(s) || (implicitDampingAllowed(s) && guardChose);
+}
 
 // Wind acts: on, with a speed and a drag coefficient (the wind phase runs; a cloth in wind never sleeps).
 bool windBlows(const Settings& settings);

@@ -151,17 +151,18 @@ struct WindCache {
     std::vector<std::array<size_t, 2>> threadRange; // per thread: particles [lo, hi) its chunk touches
 };
 
-// The stability guard's estimate of the stable sub-step (stability.cpp), cached.
+// The stability guard's estimate of the stable sub-step (stability.cpp), cached: one for the frames
+// that do not interact (the step within the particle budget) and one for those that do (the step
+// without per-spring caps, step.cpp), each computed the first time a frame of its kind needs it.
 struct GuardCache {
     static constexpr unsigned kDeps = kDependsOnTopology | kDependsOnMass | kDependsOnMaterial;
+    struct Estimate {
+        bool known = false, freeKnown = false;
+        double step = 0;     // s, with the springs' damping
+        double freeStep = 0; // s, with it left out (time.damping implicit or auto)
+    };
     CacheStamp stamp;
-    bool stableKnown = false; // stableStep is computed the first time a frame does not interact
-    bool capsKnown = false;   // capsStep is computed the first time a frame interacts
-    double stableStep = 0; // s, the guard's step within the particle budget
-    double capsStep = 0;   // s, the step without per-spring caps (while interacting, step.cpp)
-    // The same two with the springs' damping left out (time.damping implicit or auto).
-    bool stableFreeKnown = false, capsFreeKnown = false;
-    double stableFreeStep = 0, capsFreeStep = 0;
+    Estimate resting, interacting;
 };
 
 // What sleep.cpp remembers of the cloth it put to sleep.
@@ -236,7 +237,8 @@ struct StepState {
     // step and caps springs one by one (step.cpp, World::guardSubsteps).
     bool interacting = false;
     // This frame takes the springs' damping implicitly under time.damping = auto: the guard chose it
-    // (World::guardSubsteps) because the explicit damping's step would be past time.max_substeps.
+    // (World::guardSubsteps) because the explicit damping's step would be past time.max_substeps
+    // or its sub-steps would cost more (implicitDampingNow).
     bool dampingImplicit = false;
     SleepState sleep;
 };
