@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -175,18 +176,24 @@ TEST(Collision, FastBallDoesNotPassThroughTheCurtain) {
 // (bench/README.md, "The fabric a ball stretches"). Only 64 and 128 are within 10 % at 4 m: over 48-160
 // a side the ball leaves at 6.88 / 7.02 / 6.44 / 6.46 / 6.49 / 6.48 / 5.94 m/s on one thread (160: 18 %
 // below 64; bench/README.md, "The gauge's line held as a whole").
+// One throw sits on round-off: the 4 m curtain's first tear comes at 0.117, 0.133 or 0.150 s at 64
+// and at 128 a side with gravity 1e-5 or 1e-6 m/s^2 stronger or weaker, and the ball leaves at
+// 6.1-7.0 m/s (on one thread, on two, and with the limit's two-thread order: bench/README.md,
+// "Gauss-Seidel by regions"). So each resolution is thrown five times so, and their medians compared.
 struct BandThrow {
     double firstTear = -1; // s
     float speed = 0;       // m/s, the ball's z speed 0.6 s after the throw
     float z = 0;           // m, where it is then (the curtain hangs at z = 0)
 };
 
-BandThrow throwThroughTheCurtain(const std::string& size, int res, const std::string& band) {
+BandThrow throwThroughTheCurtain(const std::string& size, int res, const std::string& band,
+                                 const std::string& gravity = "-9.81") {
     World w;
     const std::string r = std::to_string(res);
     EXPECT_EQ(loadScene(w, "curtain",
                         std::vector<std::string>{"cloth.width=" + size, "cloth.height=" + size, "cloth.resolution_x=" + r,
-                                                 "cloth.resolution_y=" + r, "collision.stretch_band=" + band}),
+                                                 "cloth.resolution_y=" + r, "collision.stretch_band=" + band,
+                                                 "gravity.y=" + gravity}),
               "");
     Ball b; // the ball tool's default, square on at the middle
     b.x = Vec3(0.f, 0.f, 1.f);
@@ -208,12 +215,28 @@ TEST(Collision, ABallStretchesTheSameBandOfFabricAtEveryResolution) {
         const char* size;
         int coarse, fine;
     };
+    // The median first tear, speed and place of five throws whose gravity differs by round-off.
+    auto medianThrow = [](const char* size, int res) {
+        std::vector<BandThrow> t;
+        for (const char* g : {"-9.81", "-9.81001", "-9.80999", "-9.8101", "-9.8099"})
+            t.push_back(throwThroughTheCurtain(size, res, "0.05", g));
+        auto median = [&](auto field) {
+            std::vector<double> v;
+            for (const BandThrow& b : t) v.push_back(double(field(b)));
+            std::sort(v.begin(), v.end());
+            return v[v.size() / 2];
+        };
+        BandThrow m;
+        m.firstTear = median([](const BandThrow& b) { return b.firstTear; });
+        m.speed = float(median([](const BandThrow& b) { return b.speed; }));
+        m.z = float(median([](const BandThrow& b) { return b.z; }));
+        return m;
+    };
     for (const Case& c : {Case{"2", 40, 96}, Case{"4", 64, 128}}) {
-        const BandThrow a = throwThroughTheCurtain(c.size, c.coarse, "0.05"),
-                        b = throwThroughTheCurtain(c.size, c.fine, "0.05");
+        const BandThrow a = medianThrow(c.size, c.coarse), b = medianThrow(c.size, c.fine);
         const std::string what = std::string(c.size) + " m curtain at " + std::to_string(c.coarse) + " and " +
                                  std::to_string(c.fine) + " a side";
-        std::printf("%s: first tear %.3f / %.3f s, ball %.2f / %.2f m/s at z %.2f / %.2f m\n", what.c_str(), a.firstTear,
+        std::printf("%s, medians: first tear %.3f / %.3f s, ball %.2f / %.2f m/s at z %.2f / %.2f m\n", what.c_str(), a.firstTear,
                     b.firstTear, a.speed, b.speed, a.z, b.z);
         EXPECT_GT(a.firstTear, 0.0) << what;
         EXPECT_GT(b.firstTear, 0.0) << what;

@@ -46,6 +46,7 @@
 #include "tear_topology.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -63,6 +64,9 @@ bool driversMove(const std::vector<Driver>& drivers) {
 namespace {
 
 bool limitSkipsAllowed() { return envSwitchOn("CLOTHTEAR_LIMIT_SKIPS"); }
+// Gauss-Seidel by regions on several threads (regionPasses); CLOTHTEAR_LIMIT_REGIONS=0: on thread 0
+// alone, in the one-thread order, for the benchmarks and tests that compare the two.
+bool limitRegionsAllowed() { return envSwitchOn("CLOTHTEAR_LIMIT_REGIONS"); }
 
 float gaugeStrain(const LimitCache& C, const Cloth& cloth, Index s, float gauge);
 
@@ -71,6 +75,9 @@ constexpr uint32_t kPrefilterWait = 4;
 
 // Lists shorter than this are worked by one thread (a barrier costs more than the work).
 constexpr size_t kSerialList = 2048;
+// Gauss-Seidel on several threads (regionPasses): lists shorter than this are one region, thread
+// 0's (the two barriers a split pass adds cost more than half of such a pass).
+constexpr size_t kRegionMinList = 128;
 
 // Is a spring of rest length `rest` and squared length len2 over its limit by more than the
 // tolerance, given its ends' flags (or-ed)? Springs under a ball may stretch up to their held length
@@ -218,6 +225,12 @@ private:
     void prepareTethers(int nt);
     void pullTethers(int t, int nt, bool anyFound);
     void passes(int t, int nt);
+    // Gauss-Seidel on several threads (regionPasses): each pass splits the listed springs by region.
+    void regionPasses(int t, int nt);
+    // This thread's list counted by bins of particle index (its springs' first ends) into
+    // regionHist_[t], and its size into listSize_[t].
+    void countByBin(int t, const SpringList& list);
+    uint32_t binOf(Index p) const { return regionBin_[p]; }
     // A Jacobi pass is two sweeps over the lists. Sweep 1 (countPass) drops the springs back within
     // the limit and counts the corrections each particle gets (into buffer c). Sweep 2 (correctPass)
     // adds the corrections, each spring's divided by the larger total count of its ends (over all
@@ -249,6 +262,7 @@ private:
     // The two exact skips (the tethers, expand after them); CLOTHTEAR_LIMIT_SKIPS=0 turns them off,
     // for the test that they change no bit.
     const bool skipsAllowed_;
+    const bool regions_; // limitRegionsAllowed
     const uint32_t stamp0_;
     Vec3* x_;
     Vec3* v_;
@@ -266,6 +280,11 @@ private:
     size_t movedCount_[kMaxThreadSlots] = {};       // particles this thread's tethers moved
     size_t overAfterTethers_[kMaxThreadSlots] = {}; // countMaybeOver of this thread's springs
     int work_[kMaxThreadSlots] = {};
+    // regionPasses: each thread's list counted by bin of rest position (LimitCache::regionBin); the
+    // regions are runs of bins.
+    static constexpr uint32_t kRegionBins = LimitCache::kRegionBins;
+    const uint8_t* regionBin_ = nullptr;
+    uint32_t regionHist_[kMaxThreadSlots][kRegionBins] = {};
 };
 
 LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
@@ -277,12 +296,14 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       useTethers_(ctx.limiting),
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
       holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)), skipsAllowed_(limitSkipsAllowed()),
+      regions_(limitRegionsAllowed()),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
       candidate_(ctx.limiting ? state.limit.candidate.data() : nullptr),
       movedIn_(ctx.limiting ? state.limit.moved.data() : nullptr) {
     if (ctx.limiting) C_.passStamp += uint32_t(iterations_) + 1; // the passes', then the tethers' stamp
+    regionBin_ = state.limit.regionBin.data();
 }
 
 // Every structural spring once, most of them with one compare and no square root: tear candidates
@@ -515,6 +536,7 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringL
     // Room for every spring of every moved particle, made once (a resize per particle checked the
     // capacity each time), and not zero-filled (SpringList): only what is taken is read.
     size_t n = list.size(), room = 0;
+    uint8_t sink = 0; // where a spring not taken writes its flag
     for (Index p : moved) room += start[p + 1] - start[p];
     list.resize(n + room);
     Index* out = list.data();
@@ -527,9 +549,13 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringL
             const Index i = e.spring, q = e.other;
             const bool fromOtherEnd = (q < p) & (movedIn[q] == stamp);
             const bool over = exceedsLimit(fp | flags[q], e.rest, (x[q] - xp).squaredNorm(), done, heldDone);
-            const bool take = (listed[i] == 0) & !fromOtherEnd & over;
+            // Relaxed atomics (plain byte moves): under regionPasses the thread that moved q may be
+            // taking this spring now, from its end; this one reads the flag but writes it only if it
+            // takes the spring (a write back of the flag read would undo the other thread's).
+            const bool take = (std::atomic_ref<uint8_t>(listed[i]).load(std::memory_order_relaxed) == 0) &
+                              !fromOtherEnd & over;
             out[n] = i;
-            listed[i] |= uint8_t(take);
+            std::atomic_ref<uint8_t>(take ? listed[i] : sink).store(1, std::memory_order_relaxed);
             n += take;
         }
     }
@@ -546,6 +572,7 @@ void LimitSolve::passes(int t, int nt) {
     SpringList& list = active[t];
     const Chunk pc = chunkOf(cloth_.particleCount(), t, nt);
     if (gaussSeidel_ && nt > 1) {
+        if (regions_) return regionPasses(t, nt);
         // One list: the threads' lists in thread order.
         parallelBarrier(nt);
         if (t == 0)
@@ -606,6 +633,101 @@ void LimitSolve::passes(int t, int nt) {
         if (t == 0 && pass + 1 == iterations_) cappedSprings = corrected;
     }
     // Springs still listed (iteration cap, exempt candidates) leave their lists.
+    parallelBarrier(nt);
+    for (Index i : list) listed_[i] = 0;
+}
+
+void LimitSolve::countByBin(int t, const SpringList& list) {
+    uint32_t* hist = regionHist_[t];
+    std::fill(hist, hist + kRegionBins, 0u);
+    for (Index i : list) ++hist[binOf(springs_[i].a)];
+    listSize_[t] = list.size();
+}
+
+// Gauss-Seidel passes on nt threads. On one thread a pass corrects the listed springs in place, one
+// after the other; under a moving hand every sub-step runs its passes to the cap on lists of a few
+// hundred springs, and on two threads the other thread waited through them (the window's 128 x 128
+// drag spent most of its limit phase there: bench/README.md, "Gauss-Seidel by regions"). Here a pass
+// splits the cloth into nt regions, runs of bins of rest position (LimitCache::regionBin) chosen
+// from the lists so that each gets about as many springs, and thread r corrects, in place and in
+// list order (the threads' lists in thread order), the springs whose two ends are both in region r:
+// no two threads move the same particle. Then thread 0 corrects the springs that join two regions.
+// Backwards passes run each region's springs backwards. A list shorter than kRegionMinList is one
+// region, thread 0's (two barriers a pass, as the one-thread order had). The order is a function
+// of the lists alone, so the result is the same run after run for a thread count: the one-thread
+// order up to springs that share no particle, but for the joining springs, which come last (as the
+// spring forces' sums are another order of the same floats on two threads). A spring is listed
+// again by the thread that moved its lower-numbered moved end (expand), so by one thread.
+void LimitSolve::regionPasses(int t, int nt) {
+    SpringList& list = T_.active[t];
+    std::vector<SpringList>& mine = T_.regionLists[t]; // this thread's list by region, then joining two
+    std::vector<Index>& moved = T_.moved[t];
+    const size_t joining = size_t(nt);
+    countByBin(t, list);
+    parallelBarrier(nt); // lists counted
+    for (int pass = 0; pass < iterations_; ++pass) {
+        const uint32_t stamp = stamp0_ + uint32_t(pass) + 1;
+        const bool another = pass + 1 < iterations_;
+        const bool backwards = pass % 2 == 1;
+        size_t total = 0;
+        for (int k = 0; k < nt; ++k) total += listSize_[k];
+        if (total == 0) break;
+        if (t == 0) passesRun = pass + 1;
+        // The regions, the same on every thread: runs of bins of about total / nt springs each.
+        const bool split = total >= kRegionMinList;
+        uint8_t regionOfBin[kRegionBins] = {};
+        if (split) {
+            uint64_t counted = 0;
+            int r = 0;
+            for (uint32_t b = 0; b < kRegionBins; ++b) {
+                regionOfBin[b] = uint8_t(r);
+                for (int k = 0; k < nt; ++k) counted += regionHist_[k][b];
+                while (r + 1 < nt && counted * uint64_t(nt) >= total * uint64_t(r + 1)) ++r;
+            }
+        }
+        for (SpringList& l : mine) l.clear();
+        for (Index i : list) {
+            const uint8_t ra = regionOfBin[binOf(springs_[i].a)], rb = regionOfBin[binOf(springs_[i].b)];
+            mine[ra == rb ? ra : joining].push_back(i);
+        }
+        parallelBarrier(nt); // every list split
+        moved.clear();
+        int corrected = 0;
+        for (int j = 0; j < nt; ++j) {
+            const int k = backwards ? nt - 1 - j : j;
+            corrected += gaussSeidelPass(T_.regionLists[k][t], backwards, stamp, moved);
+        }
+        if (split) {
+            parallelBarrier(nt); // the regions corrected
+            if (t == 0)
+                for (int j = 0; j < nt; ++j) {
+                    const int k = backwards ? nt - 1 - j : j;
+                    corrected += gaussSeidelPass(T_.regionLists[k][joining], backwards, stamp, moved);
+                }
+            parallelBarrier(nt); // the joining springs corrected: positions and stamps complete
+        }
+        // (One region: the other threads had nothing to correct, and read nothing thread 0 wrote
+        // until the barrier below.) The springs still listed (gaussSeidelPass dropped the others
+        // from their lists), then those the pass pushed over the limit.
+        list.clear();
+        for (int k = 0; k < nt; ++k) {
+            const SpringList& kept = T_.regionLists[k][t];
+            list.insert(list.end(), kept.begin(), kept.end());
+        }
+        if (t == 0)
+            for (int k = 0; k < nt; ++k) {
+                const SpringList& kept = T_.regionLists[k][joining];
+                list.insert(list.end(), kept.begin(), kept.end());
+            }
+        if (another) expand(moved, stamp, list);
+        countByBin(t, list);
+        work_[t] = corrected;
+        parallelBarrier(nt); // work_[], lists and their counts complete
+        int all = 0;
+        for (int k = 0; k < nt; ++k) all += work_[k];
+        if (all == 0) break;
+        if (t == 0 && pass + 1 == iterations_) cappedSprings = all;
+    }
     parallelBarrier(nt);
     for (Index i : list) listed_[i] = 0;
 }
@@ -769,6 +891,8 @@ void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
     for (auto& c : T.corrV)
         if (c.size() != particles) c.resize(particles, Corr::Zero());
     T.active.resize(threads);
+    T.regionLists.resize(threads);
+    for (auto& r : T.regionLists) r.resize(size_t(threads) + 1);
     T.moved.resize(threads);
     T.touched.resize(threads);
     T.found.resize(threads);

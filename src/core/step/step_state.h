@@ -111,6 +111,12 @@ struct LimitCache {
     };
     std::vector<uint32_t> springStart;
     std::vector<SpringEnd> ends;
+    // Per particle: its bin of rest position, kRegionBins of equal width along the axis whose bins
+    // follow the numbering best (buildLimitCache; limit.cpp, regionPasses: its regions are runs of
+    // bins). By rest position, not by index, so that a tear's new particles (appended last) fall in
+    // their neighbours' bin.
+    static constexpr uint32_t kRegionBins = 64;
+    std::vector<uint8_t> regionBin;
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
     std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
@@ -197,6 +203,9 @@ struct ThreadBuffers {
     std::vector<std::vector<Eigen::Vector4f>> corr; // limit corrections (xyz, count), zero between passes
     std::vector<std::vector<Eigen::Vector4f>> corrV; // limit velocity changes (xyz)
     std::vector<SpringList> active;                 // springs the limit still works on
+    // Gauss-Seidel on several threads (limit.cpp, regionPasses): per thread, its list split by
+    // region (one per thread), then the springs joining two regions.
+    std::vector<std::vector<SpringList>> regionLists;
     std::vector<std::vector<Index>> touched;        // particles with a correction this pass
     std::vector<std::vector<Index>> moved;          // particles the last Jacobi pass moved
     std::vector<std::vector<TearCandidate>> found;  // tear candidates of the scan

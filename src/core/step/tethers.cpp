@@ -3,6 +3,7 @@
 #include "tethers.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace clothtear {
 namespace {
@@ -109,6 +110,34 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
         const Spring& s = cloth.springs[i];
         for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
             t.ends[fill[end]++] = LimitCache::SpringEnd{i, other, s.rest};
+        }
+    }
+    // The bins along the axis of rest space whose bins follow the particles' numbering best (the
+    // rows of a grid): a region is then mostly a run of numbers, and the two threads' particles,
+    // springs and flags seldom share a cache line.
+    t.regionBin.assign(n, 0);
+    if (n > 0) {
+        Vec3d lo = cloth.rest[0], hi = cloth.rest[0];
+        for (const Vec3d& r : cloth.rest) lo = lo.cwiseMin(r), hi = hi.cwiseMax(r);
+        std::vector<uint8_t> bins(n);
+        size_t bestRuns = 0;
+        bool found = false;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double width = hi[axis] - lo[axis];
+            if (!(width > 0)) continue;
+            const double scale = double(LimitCache::kRegionBins) / width;
+            size_t runs = 0; // consecutive particles in one bin
+            for (size_t p = 0; p < n; ++p) {
+                const double b = std::floor((cloth.rest[p][axis] - lo[axis]) * scale);
+                bins[p] = uint8_t(std::clamp(b, 0.0, double(LimitCache::kRegionBins - 1)));
+                runs += p > 0 && bins[p] == bins[p - 1];
+            }
+            if (!found || runs > bestRuns) {
+                found = true;
+                bestRuns = runs;
+                t.regionBin.swap(bins);
+                bins.resize(n);
+            }
         }
     }
     t.moved.assign(n, 0);
