@@ -31,8 +31,9 @@
 //               pulls it back. The springs of the particles a tether moved are listed if it pushed
 //               them over the limit (a pull sideways, towards another anchor, can).
 //   3. passes   over the listed springs only (limit.solver): Gauss-Seidel, in place, in one order
-//               (the threads' lists merged in thread order), forwards and backwards in turn, by one
-//               thread; or averaged Jacobi over the threads. A pass drops the
+//               (the threads' lists merged in thread order), forwards and backwards in turn: on one
+//               thread, or on several by regions of the cloth that share no particle
+//               (regionPasses); or averaged Jacobi over the threads. A pass drops the
 //               springs back within the limit (to kLimitTolerance) and lists the springs of the
 //               particles it moved that it pushed over (particle-spring table), so a pass covers
 //               what a full pass would correct; they stop when a pass corrects nothing (passCap:
@@ -284,7 +285,8 @@ private:
     // regions are runs of bins.
     static constexpr uint32_t kRegionBins = LimitCache::kRegionBins;
     const uint8_t* regionBin_ = nullptr;
-    uint32_t regionHist_[kMaxThreadSlots][kRegionBins] = {};
+    // Not zero-filled: written by countByBin before it is read (16 KB, every sub-step).
+    uint32_t regionHist_[kMaxThreadSlots][kRegionBins];
 };
 
 LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
@@ -910,6 +912,8 @@ void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
 void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     prepareBuffers(state.threads, int(state.threads.acc.size()), cloth.particleCount());
     if (ctx.limiting) refreshLimitCache(ctx, cloth, state.limit);
+    if (ctx.limiting && state.threads.acc.size() > 1 && state.limit.regionBin.size() != cloth.particleCount())
+        buildRegionBins(cloth, state.limit);
     markStretchBand(ctx, cloth, state);
     capTensionUnderBall(ctx, cloth, state);
     LimitSolve solve(ctx, cloth, state);

@@ -112,9 +112,33 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
             t.ends[fill[end]++] = LimitCache::SpringEnd{i, other, s.rest};
         }
     }
-    // The bins along the axis of rest space whose bins follow the particles' numbering best (the
-    // rows of a grid): a region is then mostly a run of numbers, and the two threads' particles,
-    // springs and flags seldom share a cache line.
+    t.regionBin.clear(); // built when the passes run on several threads (buildRegionBins)
+    t.moved.assign(n, 0);
+    t.passStamp = 0;
+    t.listed.assign(cloth.springs.size(), 0);
+    t.candidate.assign(cloth.springs.size(), 0);
+    double restSum = 0;
+    for (const Spring& s : cloth.springs) restSum += s.rest;
+    t.meanRest = cloth.springs.empty() ? 0.f : float(restSum / double(cloth.springs.size()));
+
+    std::vector<Index> anchors;
+    for (Index p = 0; p < n; ++p)
+        if (anchor[p]) anchors.push_back(p);
+    t.depth = breadthFirst(cloth, t, anchors, t.tethers[0]);
+    const std::array<Index, 2> ends = spanEnds(cloth, anchors);
+    for (int e = 0; e < 2; ++e) {
+        std::vector<Index> source;
+        if (ends[e] != kNone) source.push_back(ends[e]);
+        breadthFirst(cloth, t, source, t.tethers[1 + e]);
+    }
+}
+
+// The bins along the axis of rest space whose bins follow the particles' numbering best (the rows
+// of a grid): a region is then mostly a run of numbers, and two threads' particles, springs and
+// flags seldom share a cache line (bins along the longer side of a square curtain, its columns,
+// made the passes slower than one thread's).
+void buildRegionBins(const Cloth& cloth, LimitCache& t) {
+    const size_t n = cloth.particleCount();
     t.regionBin.assign(n, 0);
     if (n > 0) {
         Vec3d lo = cloth.rest[0], hi = cloth.rest[0];
@@ -139,24 +163,6 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
                 bins.resize(n);
             }
         }
-    }
-    t.moved.assign(n, 0);
-    t.passStamp = 0;
-    t.listed.assign(cloth.springs.size(), 0);
-    t.candidate.assign(cloth.springs.size(), 0);
-    double restSum = 0;
-    for (const Spring& s : cloth.springs) restSum += s.rest;
-    t.meanRest = cloth.springs.empty() ? 0.f : float(restSum / double(cloth.springs.size()));
-
-    std::vector<Index> anchors;
-    for (Index p = 0; p < n; ++p)
-        if (anchor[p]) anchors.push_back(p);
-    t.depth = breadthFirst(cloth, t, anchors, t.tethers[0]);
-    const std::array<Index, 2> ends = spanEnds(cloth, anchors);
-    for (int e = 0; e < 2; ++e) {
-        std::vector<Index> source;
-        if (ends[e] != kNone) source.push_back(ends[e]);
-        breadthFirst(cloth, t, source, t.tethers[1 + e]);
     }
 }
 

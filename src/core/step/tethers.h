@@ -41,6 +41,9 @@ namespace clothtear {
 // particles with anchor[p] != 0 (pinned and not moved by a driver). Particles that no anchor
 // reaches through structural springs get no tether. Sizes the work arrays.
 void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, LimitCache& cache);
+// LimitCache::regionBin, for the Gauss-Seidel passes on several threads (limit.cpp, regionPasses);
+// buildLimitCache empties it.
+void buildRegionBins(const Cloth& cloth, LimitCache& cache);
 
 // Marks in `set.cut` every particle whose tether path runs through a particle in `seeds`: their
 // tethers must not pull this sub-step (a spring on the path is tearing).
