@@ -232,6 +232,11 @@ private:
     // regionHist_[t], and its size into listSize_[t].
     void countByBin(int t, const SpringList& list);
     uint32_t binOf(Index p) const { return regionBin_[p]; }
+    // After a pass's last barrier: did no thread correct a spring (the passes stop)? The last
+    // allowed pass's count is what the cap left over (cappedSprings).
+    bool correctedNothing(int t, int nt, int pass);
+    // After the passes: the springs still listed (iteration cap, exempt candidates) leave the lists.
+    void leaveLists(int nt, const SpringList& list);
     // A Jacobi pass is two sweeps over the lists. Sweep 1 (countPass) drops the springs back within
     // the limit and counts the corrections each particle gets (into buffer c). Sweep 2 (correctPass)
     // adds the corrections, each spring's divided by the larger total count of its ends (over all
@@ -629,12 +634,20 @@ void LimitSolve::passes(int t, int nt) {
             if (another) expand(moved[t], stamp, list);
         }
         parallelBarrier(nt); // work_[] complete
-        int corrected = 0;
-        for (int k = 0; k < nt; ++k) corrected += work_[k];
-        if (corrected == 0) break;
-        if (t == 0 && pass + 1 == iterations_) cappedSprings = corrected;
+        if (correctedNothing(t, nt, pass)) break;
     }
-    // Springs still listed (iteration cap, exempt candidates) leave their lists.
+    leaveLists(nt, list);
+}
+
+bool LimitSolve::correctedNothing(int t, int nt, int pass) {
+    int corrected = 0;
+    for (int k = 0; k < nt; ++k) corrected += work_[k];
+    if (corrected == 0) return true;
+    if (t == 0 && pass + 1 == iterations_) cappedSprings = corrected;
+    return false;
+}
+
+void LimitSolve::leaveLists(int nt, const SpringList& list) {
     parallelBarrier(nt);
     for (Index i : list) listed_[i] = 0;
 }
@@ -725,13 +738,9 @@ void LimitSolve::regionPasses(int t, int nt) {
         countByBin(t, list);
         work_[t] = corrected;
         parallelBarrier(nt); // work_[], lists and their counts complete
-        int all = 0;
-        for (int k = 0; k < nt; ++k) all += work_[k];
-        if (all == 0) break;
-        if (t == 0 && pass + 1 == iterations_) cappedSprings = all;
+        if (correctedNothing(t, nt, pass)) break;
     }
-    parallelBarrier(nt);
-    for (Index i : list) listed_[i] = 0;
+    leaveLists(nt, list);
 }
 
 void LimitSolve::run() {
