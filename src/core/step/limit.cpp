@@ -228,8 +228,8 @@ private:
     void passes(int t, int nt);
     // Gauss-Seidel on several threads (regionPasses): each pass splits the listed springs by region.
     void regionPasses(int t, int nt);
-    // This thread's list counted by bins of particle index (its springs' first ends) into
-    // regionHist_[t], and its size into listSize_[t].
+    // This thread's list counted by bin of rest position (LimitCache::regionBin, of each spring's
+    // end a) into regionHist_[t], and its size into listSize_[t].
     void countByBin(int t, const SpringList& list);
     uint32_t binOf(Index p) const { return regionBin_[p]; }
     // After a pass's last barrier: did no thread correct a spring (the passes stop)? The last
