@@ -39,6 +39,9 @@ struct StepProfile {
     uint64_t limitCapped = 0;
     uint64_t limitCappedSprings = 0;
     uint64_t limitPasses = 0; // passes of the length limit run, summed over sub-steps
+    // Of them, Gauss-Seidel passes split over the threads by region of the cloth (several threads,
+    // a list of 128 springs or more; src/core/step/limit.cpp, regionPasses).
+    uint64_t limitRegionPasses = 0;
     // Sub-steps whose limit skipped the tethers (no spring past their reach) and whose limit skipped
     // listing the springs the tethers' pull may have put over it (a scan found none): both exact.
     uint64_t limitTethersSkipped = 0;

@@ -112,6 +112,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         {"damping_implicit_substeps", w.profile.dampingImplicitSubsteps},
         {"damping_implicit", w.profile.dampingImplicit},
         {"limit_passes", w.profile.limitPasses}, // passes of the length limit, summed over sub-steps
+        {"limit_region_passes", w.profile.limitRegionPasses}, // of them split over the threads by region
         // sub-steps whose limit skipped the tethers / the listing after them (exact skips, limit.cpp)
         {"limit_tethers_skipped", w.profile.limitTethersSkipped},
         {"limit_expand_skipped", w.profile.limitExpandSkipped},

@@ -148,6 +148,7 @@ public:
     void run();
     int cappedSprings = 0; // springs the last allowed pass still corrected (thread 0 writes it)
     int passesRun = 0;     // passes that looked at a non-empty list (thread 0 writes it)
+    int regionPassesRun = 0; // of them split by region over the threads (regionPasses; thread 0)
     bool tethersSkipped = false, expandSkipped = false; // (thread 0 writes them)
     bool prefilterFailed = false; // the prefilter ran and found springs over: expand ran anyway
 
@@ -690,6 +691,7 @@ void LimitSolve::regionPasses(int t, int nt) {
         if (t == 0) passesRun = pass + 1;
         // The regions, the same on every thread: runs of bins of about total / nt springs each.
         const bool split = total >= kRegionMinList;
+        if (t == 0) regionPassesRun += split;
         uint8_t regionOfBin[kRegionBins] = {};
         if (split) {
             uint64_t counted = 0;
@@ -931,6 +933,7 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     for (Index p : state.stretchBand) cloth.flags[p] &= uint8_t(~kTouched);
     state.stretchBand.clear();
     ctx.profile->limitPasses += uint64_t(solve.passesRun);
+    ctx.profile->limitRegionPasses += uint64_t(solve.regionPassesRun);
     ctx.profile->limitTethersSkipped += solve.tethersSkipped;
     ctx.profile->limitExpandSkipped += solve.expandSkipped;
     LimitCache& C = state.limit;
