@@ -9,13 +9,11 @@
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
 #include "clothtear/tear.h"
+#include "omp_threads.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#if CLOTHTEAR_HAVE_OPENMP
-#include <omp.h>
-#endif
 
 using namespace clothtear;
 
@@ -24,12 +22,7 @@ namespace {
 // Runs `scene` for `frames` with `threads` OpenMP threads; between frames a fixed interaction (an
 // impulse every 7 frames, a thrown ball at frame 20) stands in for a person, the same every run.
 uint64_t runHash(const char* scene, const std::vector<std::string>& sets, int frames, int threads) {
-#if CLOTHTEAR_HAVE_OPENMP
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-#else
-    (void)threads;
-#endif
+    const test::OmpThreads scope(threads);
     World w;
     EXPECT_EQ(loadScene(w, scene, sets), "");
     for (int f = 0; f < frames; ++f) {
@@ -46,9 +39,6 @@ uint64_t runHash(const char* scene, const std::vector<std::string>& sets, int fr
         w.step();
     }
     EXPECT_TRUE(w.finite) << scene << ": " << w.nonFiniteWhere;
-#if CLOTHTEAR_HAVE_OPENMP
-    omp_set_num_threads(before);
-#endif
     return stateHash(w);
 }
 

@@ -10,12 +10,10 @@
 #include "clothtear/state_hash.h"
 #include "clothtear/world.h"
 #include "mesh_of.h"
+#include "omp_threads.h"
 #include "quiet_settings.h"
 
 #include <gtest/gtest.h>
-#if CLOTHTEAR_HAVE_OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -296,12 +294,7 @@ struct RegionRun {
 };
 
 RegionRun swingDown(const char* size, const char* res, int threads, bool regions) {
-#if CLOTHTEAR_HAVE_OPENMP
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-#else
-    (void)threads;
-#endif
+    const test::OmpThreads scope(threads);
     if (regions) unsetenv("CLOTHTEAR_LIMIT_REGIONS");
     else setenv("CLOTHTEAR_LIMIT_REGIONS", "0", 1);
     World w;
@@ -317,9 +310,6 @@ RegionRun swingDown(const char* size, const char* res, int threads, bool regions
         r.swing = std::max(r.swing, w.maxStrain);
     }
     unsetenv("CLOTHTEAR_LIMIT_REGIONS");
-#if CLOTHTEAR_HAVE_OPENMP
-    omp_set_num_threads(before);
-#endif
     EXPECT_TRUE(w.finite);
     r.tears = w.tearLog.total();
     r.passes = w.profile.limitPasses;
