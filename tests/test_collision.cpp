@@ -179,7 +179,8 @@ TEST(Collision, FastBallDoesNotPassThroughTheCurtain) {
 // One throw sits on round-off: the 4 m curtain's first tear comes at 0.117, 0.133 or 0.150 s at 64
 // and at 128 a side with gravity 1e-5 or 1e-6 m/s^2 stronger or weaker, and the ball leaves at
 // 6.1-7.0 m/s (on one thread, on two, and with the limit's two-thread order: bench/README.md,
-// "Gauss-Seidel by regions"). So each resolution is thrown five times so, and their medians compared.
+// "Gauss-Seidel by regions"). So each resolution is thrown five times, with gravity so apart, and
+// the medians are compared.
 struct BandThrow {
     double firstTear = -1; // s
     float speed = 0;       // m/s, the ball's z speed 0.6 s after the throw

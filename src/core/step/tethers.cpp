@@ -148,12 +148,12 @@ void buildRegionBins(const Cloth& cloth, LimitCache& t) {
         bool found = false;
         for (int axis = 0; axis < 3; ++axis) {
             const double width = hi[axis] - lo[axis];
-            if (!(width > 0)) continue;
+            if (!(width > 0) || !std::isfinite(width)) continue;
             const double scale = double(LimitCache::kRegionBins) / width;
             size_t runs = 0; // consecutive particles in one bin
             for (size_t p = 0; p < n; ++p) {
                 const double b = std::floor((cloth.rest[p][axis] - lo[axis]) * scale);
-                bins[p] = uint8_t(std::clamp(b, 0.0, double(LimitCache::kRegionBins - 1)));
+                bins[p] = uint8_t(b > 0.0 ? std::min(b, double(LimitCache::kRegionBins - 1)) : 0.0); // NaN: 0
                 runs += p > 0 && bins[p] == bins[p - 1];
             }
             if (!found || runs > bestRuns) {
