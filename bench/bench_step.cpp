@@ -183,8 +183,8 @@ void tearFrames(benchmark::State& state, const World& start) {
         phaseMs = w.profile.ms;
         state.ResumeTiming();
     }
-    // Where a frame goes (the last iteration's phase timers): the limit's passes run on one thread
-    // under a moving hand, so its share grows with the threads.
+    // Where a frame goes (the last iteration's phase timers): under a moving hand the limit's
+    // passes take most of it, and on two threads they split by region (limit.cpp, regionPasses).
     for (Phase ph : {Phase::Springs, Phase::Integrate, Phase::Limit, Phase::Tear})
         state.counters[std::string(phaseName(ph)) + "_ms"] = phaseMs[int(ph)] / kTearFrames;
     state.counters["fastest_ms_per_frame"] = fastest;
@@ -291,7 +291,7 @@ BENCHMARK(BM_SubstepAfterCut)
     ->UseRealTime()
     ->ComputeStatistics("min", fastest)
     ->Unit(benchmark::kMicrosecond);
-// The tearing frames: 64 and 128 a side, one thread, 3 iterations of 30 frames each.
+// The tearing frames: 64 and 128 a side, one and two threads, 3 iterations of 30 frames each.
 void tearingFramesCase(benchmark::internal::Benchmark* b) {
     b->ArgNames({"res", "threads"})
         ->ArgsProduct({{64, 128}, {1, 2}})

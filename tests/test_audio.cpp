@@ -5,9 +5,9 @@
 #include "wav_file.h"
 
 #include "clothtear/scenes.h"
+#include "omp_threads.h"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
 #include <filesystem>
@@ -260,11 +260,7 @@ TEST(Soundtrack, NoTearsNoSound) {
 // issue 13 goal 1's open rip length, not the synthesizer's (its part is 1.05). The runs take two
 // threads, so that every machine checks the same ones (the state depends on the thread count).
 TEST(Soundtrack, TheSameSceneAtTwoResolutionsIsAboutAsLoud) {
-    struct TwoThreads {
-        int before = omp_get_max_threads();
-        TwoThreads() { omp_set_num_threads(2); }
-        ~TwoThreads() { omp_set_num_threads(before); }
-    } twoThreads;
+    const test::OmpThreads twoThreads(2);
     double energy[2], torn[2], followed[2];
     size_t tears[2];
     const int res[2] = {40, 80};

@@ -1,15 +1,13 @@
 // The step flushes subnormal numbers (src/core/step/float_env.h) and leaves the caller's
 // floating-point environment as it found it.
 #include "clothtear/scenes.h"
+#include "omp_threads.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
-#if CLOTHTEAR_HAVE_OPENMP
-#include <omp.h>
-#endif
 
 using namespace clothtear;
 
@@ -55,18 +53,12 @@ class FloatEnvThreads : public ::testing::TestWithParam<int> {};
 // Without the flush, x.z + v.z dt stays subnormal (nothing else acts along z in a flat curtain) and
 // every free particle keeps two subnormal components.
 TEST_P(FloatEnvThreads, TheStepLeavesNoSubnormalPositionOrVelocityOnAFreeParticle) {
-#if CLOTHTEAR_HAVE_OPENMP
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(GetParam());
-#endif
+    const test::OmpThreads threads(GetParam());
     World w = curtainWithSubnormalOffsets();
     ASSERT_GT(subnormalComponentsOfFreeParticles(w), size_t(8000));
     w.step();
     EXPECT_EQ(subnormalComponentsOfFreeParticles(w), size_t(0));
     EXPECT_TRUE(w.finite);
-#if CLOTHTEAR_HAVE_OPENMP
-    omp_set_num_threads(before);
-#endif
 }
 
 INSTANTIATE_TEST_SUITE_P(Threads, FloatEnvThreads, ::testing::Values(1, 2));
@@ -75,10 +67,7 @@ INSTANTIATE_TEST_SUITE_P(Threads, FloatEnvThreads, ::testing::Values(1, 2));
 // OpenMP threads the step used, compute subnormal results again.
 TEST(FloatEnv, TheCallersEnvironmentIsRestoredOnEveryThread) {
     ASSERT_TRUE(productIsSubnormal(1e-30f, 1e-10f));
-#if CLOTHTEAR_HAVE_OPENMP
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(2);
-#endif
+    const test::OmpThreads threads(2);
     World w = curtainWithSubnormalOffsets();
     w.step();
     w.substep();
@@ -88,6 +77,5 @@ TEST(FloatEnv, TheCallersEnvironmentIsRestoredOnEveryThread) {
 #pragma omp parallel num_threads(2) reduction(& : subnormalOnEveryThread)
     subnormalOnEveryThread &= productIsSubnormal(1e-30f, 1e-10f) ? 1 : 0;
     EXPECT_EQ(subnormalOnEveryThread, 1);
-    omp_set_num_threads(before);
 #endif
 }

@@ -12,14 +12,12 @@
 // hold with or without AVX2.
 #include "clothtear/scenes.h"
 #include "clothtear/state_hash.h"
+#include "omp_threads.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <cstdio>
-#if CLOTHTEAR_HAVE_OPENMP
-#include <omp.h>
-#endif
 
 using namespace clothtear;
 
@@ -68,10 +66,7 @@ uint64_t runGolden(const GoldenCase& c) {
 } // namespace
 
 TEST(Determinism, GoldenHashesAreUnchanged) {
-#if CLOTHTEAR_HAVE_OPENMP
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(1);
-#endif
+    const test::OmpThreads oneThread(1);
     const bool print = std::getenv("CLOTHTEAR_PRINT_GOLDEN") != nullptr;
     for (const GoldenCase& c : kGolden) {
         const std::string got = hashHex(runGolden(c));
@@ -80,7 +75,4 @@ TEST(Determinism, GoldenHashesAreUnchanged) {
         EXPECT_EQ(got, c.hash) << c.name << " (scene " << c.scene << ", " << c.frames << " frames)";
 #endif
     }
-#if CLOTHTEAR_HAVE_OPENMP
-    omp_set_num_threads(before);
-#endif
 }

@@ -923,8 +923,9 @@ void prepareBuffers(ThreadBuffers& T, int threads, size_t particles) {
 void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     prepareBuffers(state.threads, int(state.threads.acc.size()), cloth.particleCount());
     if (ctx.limiting) refreshLimitCache(ctx, cloth, state.limit);
-    if (ctx.limiting && state.threads.acc.size() > 1 && state.limit.regionBin.size() != cloth.particleCount())
-        buildRegionBins(cloth, state.limit);
+    if (ctx.limiting && ctx.settings->limit.solver == LimitSolver::GaussSeidel && state.threads.acc.size() > 1 &&
+        state.limit.regionBin.size() != cloth.particleCount())
+        buildRegionBins(cloth, state.limit); // regionPasses reads them
     markStretchBand(ctx, cloth, state);
     capTensionUnderBall(ctx, cloth, state);
     LimitSolve solve(ctx, cloth, state);

@@ -112,7 +112,7 @@ struct LimitCache {
     std::vector<uint32_t> springStart;
     std::vector<SpringEnd> ends;
     // Per particle: its bin of rest position, kRegionBins of equal width along the axis whose bins
-    // follow the numbering best (buildRegionBins, only where the step has several threads;
+    // follow the numbering best (buildRegionBins, only where Gauss-Seidel runs on several threads;
     // limit.cpp, regionPasses: its regions are runs of bins). By rest position, not by index, so
     // that a tear's new particles (appended last) fall in their neighbours' bin.
     static constexpr uint32_t kRegionBins = 64;
