@@ -56,6 +56,9 @@ std::string g_glfwError; // last GLFW error, for the one-line messages (GLFW rep
 volatile std::sig_atomic_t g_stopRequested = 0;
 
 constexpr int kWindowWidth = 1280, kWindowHeight = 720;
+// The nice value of a software renderer's raster threads (raster_priority.h; measured in bench/README.md,
+// "The raster threads yield").
+constexpr int kRasterNiceness = 10;
 
 } // namespace
 
@@ -194,6 +197,12 @@ std::string App::openWindow() {
         closeWindow();
         return "clothtear: " + err;
     }
+    // A software renderer's raster threads (started with the context) yield to the simulation
+    // thread and this one (raster_priority.h).
+    const RasterNiceness niceness = rasterNicenessFromEnv(kRasterNiceness);
+    if (!niceness.error.empty()) std::cerr << "clothtear: " << niceness.error << "\n";
+    rasterYield_ = yieldSoftwareRaster(niceness.value);
+    if (!rasterYield_.error.empty()) std::cerr << "clothtear: " << rasterYield_.error << "; the others keep their priority\n";
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -249,6 +258,7 @@ void App::loadBuiltInTexture(bool numbered) {
 // ============================================================================================ [FRAME]
 
 void App::frame(bool last) {
+    const double frameStart = glfwGetTime();
     glfwPollEvents();
     if (replaying_) deliverScriptEvents();
     const double now = glfwGetTime();
@@ -305,6 +315,7 @@ void App::frame(bool last) {
     renderer_.prepare(world_, state_.render, view);
     // From here until simThread_.wait() the world, the tools' drag state, the history and the sound
     // stream are the simulation thread's (sim_thread.h): nothing below reads them.
+    const double stepsStart = glfwGetTime();
     if (overlap) simThread_->start([this, steps] { runSteps(steps); });
     renderer_.submit(fbWidth, fbHeight);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -336,6 +347,7 @@ void App::frame(bool last) {
     input_.endFrame();
     updateStats(now);
     state_.frame++;
+    run.serialMs += 1000.0 * (overlap ? (stepsStart - frameStart) + (glfwGetTime() - waitEnd) : glfwGetTime() - frameStart);
 }
 
 // ========================================================================================= [REQUESTS]
@@ -477,6 +489,8 @@ nlohmann::json App::meanCosts(double wallSeconds) const {
         {"draw_ms", per(run.drawMs, frames)},
         {"swap_ms", per(run.swapMs, frames)},
         {"wait_ms", per(run.waitMs, frames)},
+        {"steps_ms", per(run.stepsMs, frames)},
+        {"serial_ms", per(run.serialMs, frames)},
         {"steps", state_.clock.stepsTimed},
         {"step_ms", per(state_.clock.stepMsTotal, steps)},
     };
@@ -502,6 +516,8 @@ nlohmann::json App::report(double wallSeconds) const {
         {"cloth_triangles_drawn", renderer_.clothTriangles()}, // last frame; fewer from far (render_lod.h)
         {"stats_pane_overflow_px", state_.stats.statsOverflowPx}, // the stats pane's widest row past its edge
         {"dynamic_uploads", renderer_.dynamicUploads()}, // frames whose positions and normals were uploaded
+        {"raster_threads_yielding", rasterYield_.threads}, // llvmpipe's threads at a lower priority (raster_priority.h)
+        {"raster_niceness", rasterYield_.niceness},
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},
         {"step_ms", state_.clock.stepCostMs},

@@ -9,6 +9,7 @@
 #include "app_state.h"
 #include "audio_out.h"
 #include "input_state.h"
+#include "raster_priority.h"
 #include "renderer.h"
 #include "rewind.h"
 #include "sim_thread.h"
@@ -81,6 +82,7 @@ private:
     // The frame's steps while the frame before is drawn (frame(), sim_thread.h); made in run(), after
     // main() chose the OpenMP team size.
     std::optional<SimThread> simThread_;
+    RasterYield rasterYield_; // what openWindow did to the software raster threads
     // sound: the world's tears as a stream (rebased when the world is replaced or restored), played
     // live through audioOut_ and, with --audio-out, kept whole for the WAV written at exit
     std::optional<audio::SoundStream> sound_;

@@ -79,7 +79,9 @@ int App::stepsThisFrame(double realSeconds) {
 }
 
 void App::runSteps(int steps) {
+    const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < steps && world_.finite; ++i) stepOnce();
+    state_.runCosts.stepsMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void App::afterSteps() {

@@ -142,6 +142,9 @@ TEST(AppWindow, ReplayedDragTearsTheCloth) {
     const auto report = readJson(json);
     EXPECT_GT(report["tears_total"].get<int>(), 0) << report["tears"].dump();
     EXPECT_GE(report["app"]["topology_uploads"].get<int>(), 2) << "index buffers re-uploaded after tearing";
+    // Xvfb draws with llvmpipe: its raster threads yield to the simulation (raster_priority.h).
+    EXPECT_GE(report["app"]["raster_threads_yielding"].get<int>(), 1);
+    EXPECT_GT(report["app"]["raster_niceness"].get<int>(), 0);
     // The recording of that replay replays to the same cloth.
     r = runApp("--scene curtain --script '" + rec.string() + "' --json '" + json2.string() + "'");
     ASSERT_EQ(r.status, 0) << r.output;
