@@ -151,7 +151,12 @@ void App::trackBalls() {
 
 void App::updateStats(double now) {
     Stats& s = state_.stats;
+    auto sampleEnergies = [&] {
+        s.kineticEnergy = world_.kineticEnergy();
+        s.potentialEnergy = world_.potentialEnergy();
+    };
     if (s.sampleStart < 0 || world_.steps < s.stepsAtStart) {
+        sampleEnergies();
         s.sampleStart = now;
         s.frames = 0;
         s.profileAtStart = world_.profile;
@@ -170,6 +175,7 @@ void App::updateStats(double now) {
         total += s.phaseMs[p];
     }
     s.msPerStep = total;
+    sampleEnergies();
     const uint64_t substeps = world_.profile.substeps - s.profileAtStart.substeps;
     s.limitCappedShare =
         substeps ? double(world_.profile.limitCapped - s.profileAtStart.limitCapped) / double(substeps) : 0.0;

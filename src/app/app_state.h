@@ -54,6 +54,9 @@ struct Stats {
     double swapMs = 0;       // ms in glfwSwapBuffers (with a software renderer: most of the raster work)
     size_t clothTrianglesDrawn = 0; // last frame: fewer than the cloth's when seen from far (render_lod.h)
     double limitCappedShare = 0; // share of sub-steps whose length limit ran out of passes (0..1)
+    // J, of the world as the last sample saw it: a pass over every spring (half a millisecond at 128
+    // x 128), so taken with the other figures, twice a second, not every frame (updateStats).
+    double kineticEnergy = 0, potentialEnergy = 0;
     // px: the most any row of the stats pane has run past its right edge this run (0: every row
     // fits; the report's app.stats_pane_overflow_px, checked by a window test).
     float statsOverflowPx = 0;

@@ -438,7 +438,7 @@ void drawStatsPane(AppState& st, const World& world) {
     if (ps.topology != c.topologyRevision || ps.mass != c.massRevision)
         ps = {c.topologyRevision, c.massRevision, findPieces(c)};
     piecesList(st, ps.list);
-    const double ke = world.kineticEnergy(), pe = world.potentialEnergy();
+    const double ke = s.kineticEnergy, pe = s.potentialEnergy; // sampled with the rates above (updateStats)
     // Two rows: on one, a small kinetic energy ("0.000618") and a potential one ran past the pane.
     ImGui::Text("energy: kinetic %.3g J", ke);
     ImGui::Text("        potential %.3g J", pe);
