@@ -12,7 +12,10 @@
 // Memory: each array is kept in chunks of kHistoryChunkBytes, and a chunk equal to the same chunk of
 // the checkpoint before it is shared, not copied. A frame of a swinging cloth then costs its
 // positions and velocities (24 bytes a particle); a tear adds the few chunks it rewrote; the
-// topology is kept once. Checkpoints can be dropped in any order (thinning keeps every other one).
+// topology is kept once, and while the cloth's topology and mass revisions stay those of the
+// checkpoint before, its arrays are shared without comparing them (history.cpp, Taker::keyed: every
+// change to them gives the cloth a new mass revision). Checkpoints can be dropped in any order
+// (thinning keeps every other one).
 #pragma once
 #include "clothtear/world.h"
 

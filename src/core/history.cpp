@@ -9,6 +9,7 @@
 #include "step/step_state.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cstring>
 #include <type_traits>
 
@@ -38,6 +39,8 @@ struct CheckpointData {
     // What the history and the timeline read of a checkpoint without restoring it.
     double time = 0;
     uint64_t steps = 0, tears = 0;
+    // The cloth's revisions when taken: the key of its topology sections (Taker::keyed).
+    uint64_t topologyRevision = 0, massRevision = 0;
 };
 
 namespace {
@@ -53,13 +56,13 @@ void visitState(W& w, S& carry, F& f) {
     f.array(c.areaShare);
     f.array(c.rest);
     f.array(c.flags);
-    f.nested(c.particleTris);
-    f.array(c.springs);
-    f.array(c.springTopo);
-    f.array(c.bends);
-    f.array(c.bendEdge);
+    f.keyedNested(c.particleTris);
+    f.keyed(c.springs);
+    f.keyed(c.springTopo);
+    f.keyed(c.bends);
+    f.keyed(c.bendEdge);
     f.array(c.bendMemory);
-    f.array(c.triangles);
+    f.keyed(c.triangles);
     f.value(c.topologyRevision);
     f.value(c.massRevision);
     f.value(c.density);
@@ -85,9 +88,9 @@ void visitState(W& w, S& carry, F& f) {
     f.value(w.sleptFrames);
     f.value(w.finite);
     f.string(w.nonFiniteWhere);
-    f.array(w.restMesh.positions);
-    f.array(w.restMesh.triangles);
-    f.array(w.restMesh.cornerUVs);
+    f.keyed(w.restMesh.positions);
+    f.keyed(w.restMesh.triangles);
+    f.keyed(w.restMesh.cornerUVs);
     f.value(w.restFrame);
     f.value(carry.verletRunning);
     f.array(carry.verletKick);
@@ -112,9 +115,61 @@ bool warmFor(const ImplicitCacheSlot& slot, const Cloth& cloth) {
 
 // Taking: arrays into chunks, each shared with the previous checkpoint's chunk in the same place
 // when the bytes are equal.
+//
+// The topology's arrays (particleTris, springs, springTopo, bends, bendEdge, triangles) and the
+// mesh the cloth was built from are most of a checkpoint's bytes (5 of 9 MB at 128 x 128), and
+// comparing them every frame was most of its cost. They change only where the cloth gets a new
+// mass revision, a process-wide unique number (Cloth::massRevision): a tear (refreshAround), a
+// deleted piece, a cloth built or loaded; a restore puts back the arrays with the revision they
+// had. So when the previous checkpoint's topology and mass revisions are the cloth's, those
+// sections are the previous checkpoint's, shared without a look (`keyed`). Checked byte for byte
+// where asserts are on (the sanitizer build), and by History.* restoring torn, cut, re-pinned and
+// rewound worlds.
 struct Taker {
     CheckpointData& out;
     const CheckpointData* previous;
+    bool sameTopology = false; // the previous checkpoint's revisions are the cloth's
+
+    // Section `index` of the previous checkpoint when it can stand for `n` bytes of the same
+    // topology (else null).
+    const Section* keyedSection(size_t index, size_t n) const {
+        if (!sameTopology || index >= previous->sections.size()) return nullptr;
+        const Section& s = previous->sections[index];
+        return s.bytes == n ? &s : nullptr;
+    }
+    template <class T>
+    void keyed(const std::vector<T>& v) {
+        static_assert(kRawArray<T>);
+        const size_t n = v.size() * sizeof(T);
+        const Section* same = keyedSection(out.sections.size(), n);
+        if (!same) return bytes(v.data(), n);
+#ifndef NDEBUG
+        const auto* src = reinterpret_cast<const std::byte*>(v.data());
+        for (size_t k = 0; k < same->chunks.size(); ++k)
+            assert(std::memcmp(same->chunks[k]->data(), src + k * kHistoryChunkBytes, same->chunks[k]->size()) == 0 &&
+                   "a topology array changed without a new mass revision (Taker::keyed)");
+#endif
+        out.sections.push_back(*same);
+    }
+    void keyedNested(const std::vector<std::vector<Index>>& lists) {
+        // The lengths' section has one entry a list; the items' follows it.
+        const size_t index = out.sections.size();
+        if (!keyedSection(index, lists.size() * sizeof(uint32_t)) || index + 1 >= previous->sections.size())
+            return nested(lists);
+#ifndef NDEBUG
+        CheckpointData check;
+        Taker{check, nullptr}.nested(lists);
+        for (size_t s = 0; s < 2; ++s) {
+            const Section& was = previous->sections[index + s];
+            assert(was.bytes == check.sections[s].bytes && "a cloth's particleTris changed without a new mass revision");
+            for (size_t k = 0; k < was.chunks.size(); ++k)
+                assert(*was.chunks[k] == *check.sections[s].chunks[k] &&
+                       "a cloth's particleTris changed without a new mass revision");
+        }
+#endif
+        out.sections.push_back(previous->sections[index]);
+        out.sections.push_back(previous->sections[index + 1]);
+    }
 
     void bytes(const void* data, size_t n) {
         const size_t index = out.sections.size();
@@ -170,6 +225,11 @@ struct Restorer {
     size_t section = 0, valueAt = 0, stringAt = 0;
 
     template <class T>
+    void keyed(std::vector<T>& v) {
+        array(v);
+    }
+    void keyedNested(std::vector<std::vector<Index>>& lists) { nested(lists); }
+    template <class T>
     void array(std::vector<T>& v) {
         const Section& s = in.sections[section++];
         v.resize(s.bytes / sizeof(T));
@@ -221,7 +281,11 @@ bool holds(const CheckpointData* d, size_t s, size_t k, const Chunk& c) {
 
 Checkpoint Checkpoint::take(const World& world, const Checkpoint* previous) {
     auto data = std::make_shared<CheckpointData>();
+    data->topologyRevision = world.cloth.topologyRevision;
+    data->massRevision = world.cloth.massRevision;
     Taker taker{*data, previous ? previous->data_.get() : nullptr};
+    taker.sameTopology = taker.previous && taker.previous->topologyRevision == data->topologyRevision &&
+                         taker.previous->massRevision == data->massRevision;
     const StepState& carry = world.stepState();
     visitState(world, carry, taker);
     data->time = world.time;
