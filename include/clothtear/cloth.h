@@ -84,13 +84,13 @@ struct Cloth {
     std::vector<Triangle> triangles;
 
     uint64_t topologyRevision = 0; // bumped on every structural change (renderers re-upload indices)
-    // A new process-wide unique value whenever an inverse mass is set. Every change of the topology
-    // (a tear's refreshAround, a deleted piece, a cloth built or loaded) sets one too, so the
-    // history shares the topology's arrays between checkpoints by it (history.cpp, Taker::keyed):
-    // code that changes them must end with refreshInvMass of the particles it touched.
+    // A new process-wide unique value whenever an inverse mass is set (pins, tears, density): the
+    // step's caches follow it at once, and never take one cloth for another
+    // (src/core/step/revisions.h). Every change of the topology (a tear's refreshAround, a deleted
+    // piece, a cloth built or loaded) sets one too, so the history shares the topology's arrays
+    // between checkpoints by it (history.cpp, Taker::keyed): code that changes them must end with
+    // refreshInvMass of the particles it touched.
     uint64_t massRevision = 0;
-                                   // (pins, tears, density): the step's caches follow it at once, and
-                                   // never take one cloth for another (src/core/step/revisions.h)
     float density = 0.2f;          // kg/m^2 used for mass lumping
     // m. Springs shorter than this are not split again (a front that keeps halving the same corner
     // makes slivers of vanishing mass): the knife's floor; a basic tear's is minTearSplitRest. Set by

@@ -202,7 +202,8 @@ std::string App::openWindow() {
     const RasterNiceness niceness = rasterNicenessFromEnv(kRasterNiceness);
     if (!niceness.error.empty()) std::cerr << "clothtear: " << niceness.error << "\n";
     rasterYield_ = yieldSoftwareRaster(niceness.value);
-    if (!rasterYield_.error.empty()) std::cerr << "clothtear: " << rasterYield_.error << "; the others keep their priority\n";
+    if (!rasterYield_.error.empty())
+        std::cerr << "clothtear: " << rasterYield_.error << "; the others keep their priority\n";
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -347,7 +348,8 @@ void App::frame(bool last) {
     input_.endFrame();
     updateStats(now);
     state_.frame++;
-    run.serialMs += 1000.0 * (overlap ? (stepsStart - frameStart) + (glfwGetTime() - waitEnd) : glfwGetTime() - frameStart);
+    const double end = glfwGetTime();
+    run.serialMs += 1000.0 * (overlap ? (stepsStart - frameStart) + (end - waitEnd) : end - frameStart);
 }
 
 // ========================================================================================= [REQUESTS]
@@ -516,7 +518,7 @@ nlohmann::json App::report(double wallSeconds) const {
         {"cloth_triangles_drawn", renderer_.clothTriangles()}, // last frame; fewer from far (render_lod.h)
         {"stats_pane_overflow_px", state_.stats.statsOverflowPx}, // the stats pane's widest row past its edge
         {"dynamic_uploads", renderer_.dynamicUploads()}, // frames whose positions and normals were uploaded
-        {"raster_threads_yielding", rasterYield_.threads}, // llvmpipe's threads at a lower priority (raster_priority.h)
+        {"raster_threads_yielding", rasterYield_.threads}, // llvmpipe's, lowered (raster_priority.h)
         {"raster_niceness", rasterYield_.niceness},
         {"draw_ms", state_.stats.drawMs},
         {"swap_ms", state_.stats.swapMs},

@@ -81,7 +81,8 @@ int App::stepsThisFrame(double realSeconds) {
 void App::runSteps(int steps) {
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < steps && world_.finite; ++i) stepOnce();
-    state_.runCosts.stepsMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+    state_.runCosts.stepsMs += took.count();
 }
 
 void App::afterSteps() {

@@ -75,8 +75,8 @@ struct RunCosts {
     double drawMs = 0; // issuing the frame's draws
     double swapMs = 0; // glfwSwapBuffers
     double waitMs = 0; // waiting for the frame's steps on the simulation thread (the pipeline)
-    double stepsMs = 0;  // the frame's steps with what goes with each (tools, rewind checkpoint, sound), on either thread
-    double serialMs = 0; // the frame's time with no steps running beside it: before they start, after they end
+    double stepsMs = 0;  // the frame's steps with the tools, rewind checkpoint and sound (either thread)
+    double serialMs = 0; // the frame's time with no steps beside it: before they start, after they end
 };
 
 inline constexpr uint8_t kBallThrown = 1, kBallTouched = 2;

@@ -18,7 +18,8 @@ RasterYield yieldSoftwareRaster(int niceness) {
 #if defined(__linux__)
     DIR* tasks = opendir("/proc/self/task");
     if (!tasks) {
-        out.error = std::string("cannot list this process's threads (/proc/self/task: ") + std::strerror(errno) + ")";
+        out.error = std::string("cannot list this process's threads (/proc/self/task: ") + std::strerror(errno) +
+                    ")";
         return out;
     }
     while (const dirent* entry = readdir(tasks)) {

@@ -161,7 +161,8 @@ struct Taker {
         Taker{check, nullptr}.nested(lists);
         for (size_t s = 0; s < 2; ++s) {
             const Section& was = previous->sections[index + s];
-            assert(was.bytes == check.sections[s].bytes && "a cloth's particleTris changed without a new mass revision");
+            assert(was.bytes == check.sections[s].bytes &&
+                   "a cloth's particleTris changed without a new mass revision");
             for (size_t k = 0; k < was.chunks.size(); ++k)
                 assert(*was.chunks[k] == *check.sections[s].chunks[k] &&
                        "a cloth's particleTris changed without a new mass revision");

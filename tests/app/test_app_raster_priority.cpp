@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
+#include <algorithm>
+#include <cerrno>
 #include <condition_variable>
 #include <cstdlib>
 #include <mutex>
 #include <pthread.h>
+#include <string>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <thread>
@@ -97,7 +99,8 @@ TEST(RasterPriority, TheEnvironmentPicksTheValueAndABadOneSaysSo) {
         setenv("CLOTHTEAR_RASTER_NICE", bad, 1);
         n = rasterNicenessFromEnv(10);
         EXPECT_EQ(n.value, 10) << bad;
-        EXPECT_NE(n.error.find(std::string("CLOTHTEAR_RASTER_NICE=") + bad + " is not"), std::string::npos) << n.error;
+        const std::string said = std::string("CLOTHTEAR_RASTER_NICE=") + bad + " is not";
+        EXPECT_NE(n.error.find(said), std::string::npos) << n.error;
     }
     if (saved) setenv("CLOTHTEAR_RASTER_NICE", keep.c_str(), 1);
     else unsetenv("CLOTHTEAR_RASTER_NICE");
