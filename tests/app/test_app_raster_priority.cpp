@@ -20,7 +20,7 @@ using namespace clothtear::app;
 
 namespace {
 
-// A thread with a name that waits until the test lets it go, and tells its kernel thread id.
+// A thread with a name that waits until the test lets it go; its nice value read by its kernel id.
 class NamedThread {
 public:
     explicit NamedThread(const char* name) {
@@ -42,7 +42,6 @@ public:
         ready_.notify_all();
         thread_.join();
     }
-    pid_t tid() const { return tid_; }
     int niceness() const {
         errno = 0;
         return getpriority(PRIO_PROCESS, id_t(tid_));
