@@ -278,6 +278,87 @@ TEST(Limit, TheSkipsOfTheTethersAndOfTheListingAfterThemChangeNoBit) {
         expectExactSkips("curtain", with(res(r), {"time.max_substeps=10"}), 60, false, true, false);
 }
 
+// ============================================================================================ [LISTING]
+
+// After each pass the limit lists the springs of the particles the pass moved that are now over the
+// limit (limit.cpp, expand). On one thread with no ball touching that runs eight springs of a
+// particle's row at a time (AVX2, limit_expand.h), and it must list the same springs in the same
+// order as the scalar loop (CLOTHTEAR_LISTING_KERNEL=scalar): the same bits, while the kernel ran.
+// Cases: the pull sheet torn by its hand at 60 deg at two resolutions (the passes run to their cap
+// every sub-step, as under the drag tool), and a fan whose centre has twelve springs (a row longer
+// than eight: two loads) pulled out by one particle of its rim.
+struct ListingRun {
+    uint64_t hash = 0, tears = 0, avx2 = 0;
+};
+
+ListingRun runListing(bool scalar, World w, int frames) {
+    if (scalar) setenv("CLOTHTEAR_LISTING_KERNEL", "scalar", 1);
+    for (int f = 0; f < frames; ++f) w.step();
+    unsetenv("CLOTHTEAR_LISTING_KERNEL");
+    EXPECT_TRUE(w.finite);
+    return {stateHash(w), w.tearLog.total(), w.profile.limitListingsAvx2};
+}
+
+void expectSameListing(const World& w, int frames, const std::string& what, uint64_t minListings, bool tears) {
+    const ListingRun avx2 = runListing(false, w, frames), scalar = runListing(true, w, frames);
+    EXPECT_EQ(avx2.hash, scalar.hash) << what;
+    EXPECT_EQ(avx2.tears, scalar.tears) << what;
+    EXPECT_EQ(scalar.avx2, 0u) << what;
+    EXPECT_GE(avx2.avx2, minListings) << what << ": the kernel's listings";
+    if (tears) {
+        EXPECT_GT(avx2.tears, 0u) << what;
+    }
+}
+
+// The centre and two rings of twelve (radius 0.5 and 1 m), the outer ring pinned and the centre
+// thrown out of the plane at 8 m/s: the passes pull it back from every side, and its twelve springs
+// (one row, two loads) are listed from it (from an inner particle they are the centre's: listed
+// from the lower-numbered end).
+World fanThrownOut() {
+    constexpr int kSpokes = 12;
+    std::vector<Vec3d> positions{Vec3d::Zero()};
+    for (double r : {0.5, 1.0})
+        for (int k = 0; k < kSpokes; ++k) {
+            const double a = 2.0 * M_PI * k / kSpokes;
+            positions.emplace_back(r * std::cos(a), r * std::sin(a), 0.0);
+        }
+    auto inner = [](int k) { return Index(1 + (k % kSpokes)); };
+    auto outer = [](int k) { return Index(1 + kSpokes + (k % kSpokes)); };
+    std::vector<std::array<Index, 3>> triangles;
+    for (int k = 0; k < kSpokes; ++k) {
+        triangles.push_back({0, inner(k), inner(k + 1)});
+        triangles.push_back({inner(k), outer(k), outer(k + 1)});
+        triangles.push_back({inner(k), outer(k + 1), inner(k + 1)});
+    }
+    World w;
+    w.settings = test::quietSettings();
+    w.settings.limit.enabled = true;
+    w.settings.tear.enabled = false;
+    EXPECT_EQ(w.rebuild(test::meshOf(positions, triangles)), "");
+    for (int k = 0; k < kSpokes; ++k) w.cloth.setPinned(outer(k), true);
+    w.cloth.v[0] = Vec3(0.f, 0.f, 8.f);
+    return w;
+}
+
+TEST(Limit, TheListingEightSpringsAtATimeGivesTheScalarLoopsBits) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2 on this CPU: the scalar loop is the only one";
+#else
+    GTEST_SKIP() << "the AVX2 listing is built for x86-64 only";
+#endif
+    const test::OmpThreads one(1);
+    for (const char* r : {"40", "64"}) {
+        World w;
+        const std::vector<std::string> sets{std::string("cloth.resolution_x=") + r, std::string("cloth.resolution_y=") + r,
+                                            "pull.angle=60", "pull.speed=2", "sleep.enabled=false"};
+        ASSERT_EQ(loadScene(w, "pull", sets), "");
+        expectSameListing(w, 90, std::string("pull at ") + r, 90, true);
+    }
+    const World fan = fanThrownOut();
+    ASSERT_EQ(fan.cloth.particleCount(), 25u);
+    expectSameListing(fan, 30, "fan", 10, false);
+}
+
 // ============================================================================================ [REGIONS]
 
 // On several threads the Gauss-Seidel passes split each list by region of the cloth (limit.cpp,

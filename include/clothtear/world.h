@@ -46,6 +46,9 @@ struct StepProfile {
     // listing the springs the tethers' pull may have put over it (a scan found none): both exact.
     uint64_t limitTethersSkipped = 0;
     uint64_t limitExpandSkipped = 0;
+    // Listings of the springs a pass or the tethers moved over the limit that ran eight springs at a
+    // time (AVX2, one thread listing; src/core/step/limit_expand.h): the same lists as the scalar loop.
+    uint64_t limitListingsAvx2 = 0;
     // Springs (structural and bend-shear) of the last spring phase that ran in groups of eight
     // evenly spaced ones (src/core/step/spring_groups.h), and their kernel ("avx2", "sse2" or
     // "generic": none grouped).

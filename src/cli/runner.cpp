@@ -116,6 +116,7 @@ nlohmann::json makeReport(const World& w, const std::string& scene, double wallS
         // sub-steps whose limit skipped the tethers / the listing after them (exact skips, limit.cpp)
         {"limit_tethers_skipped", w.profile.limitTethersSkipped},
         {"limit_expand_skipped", w.profile.limitExpandSkipped},
+        {"limit_listings_avx2", w.profile.limitListingsAvx2},
         {"spring_kernel", w.profile.springKernel}, // the spring groups' kernel (avx2, sse2, generic)
         {"grouped_springs", w.profile.groupedSprings}, // springs it ran in the last spring phase
         {"merged_springs", w.profile.mergedSprings},   // bend-shear springs computed in a twin's entry

@@ -40,6 +40,7 @@
 //               at most). At rest that is a few hundred springs, not all of them, per sub-step.
 #include "env_switch.h"
 #include "kernels.h"
+#include "limit_expand.h"
 #include "limit_kernels.h"
 #include "parallel.h"
 #include "phases.h"
@@ -48,6 +49,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -151,6 +153,7 @@ public:
     int regionPassesRun = 0; // of them split by region over the threads (regionPasses; thread 0)
     bool tethersSkipped = false, expandSkipped = false; // (thread 0 writes them)
     bool prefilterFailed = false; // the prefilter ran and found springs over: expand ran anyway
+    int listingsAvx2 = 0;         // expand calls the AVX2 kernel ran on moved particles (alone: one writer)
 
 private:
     // Is an end of spring s under a ball this sub-step?
@@ -249,8 +252,9 @@ private:
     // the particles it moves go on `moved` (stamped).
     int gaussSeidelPass(SpringList& list, bool backwards, uint32_t stamp, std::vector<Index>& moved);
     // Lists the springs of the particles in `moved` that a pass pushed over the limit. A spring
-    // whose two ends both moved is listed from its lower-numbered end only.
-    void expand(const std::vector<Index>& moved, uint32_t stamp, SpringList& list);
+    // whose two ends both moved is listed from its lower-numbered end only. `alone`: no other
+    // thread lists at the same time (then the AVX2 kernel may run: limit_expand.h).
+    void expand(const std::vector<Index>& moved, uint32_t stamp, SpringList& list, bool alone);
     bool prefilterPays(size_t totalMoved) const;
     size_t countMaybeOver(int t, int nt) const;
 
@@ -270,6 +274,9 @@ private:
     // for the test that they change no bit.
     const bool skipsAllowed_;
     const bool regions_; // limitRegionsAllowed
+    // expand may run the AVX2 listing (limit_expand.h): the CPU has it and no particle is under a
+    // ball or in a stretch band this sub-step (the kernel tests the plain limit only).
+    const bool listingAvx2_;
     const uint32_t stamp0_;
     Vec3* x_;
     Vec3* v_;
@@ -305,6 +312,7 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
       holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)), skipsAllowed_(limitSkipsAllowed()),
       regions_(limitRegionsAllowed()),
+      listingAvx2_(listingAvx2Available() && state.contacts.empty() && state.stretchBand.empty()),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
@@ -427,7 +435,7 @@ void LimitSolve::pullTethers(int t, int nt, bool anyFound) {
         }
         if (t == 0) prefilterFailed = true;
     }
-    expand(moved, stamp, T_.active[t]);
+    expand(moved, stamp, T_.active[t], nt == 1);
 }
 
 // The tethers moved `totalMoved` particles; expand reads the structural springs of each (about six,
@@ -523,13 +531,15 @@ int LimitSolve::gaussSeidelPass(SpringList& list, bool backwards, uint32_t stamp
     return corrected;
 }
 
-void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringList& list) {
+void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringList& list, bool alone) {
     // overLimit, from the particle-spring table's other end and rest length: the spring itself is
     // not read (|x_q - x_p|^2 is |x_b - x_a|^2 to the bit).
     // Members in locals: the byte stores into `listed` may alias anything, and the compiler
     // reloaded every member after each of them.
     const uint32_t* start = C_.springStart.data();
-    const LimitCache::SpringEnd* ends = C_.ends.data();
+    const Index* endSpring = C_.endSpring.data();
+    const Index* endOther = C_.endOther.data();
+    const float* endRest = C_.endRest.data();
     const Vec3* x = x_;
     const uint8_t* flags = flags_;
     const uint32_t* movedIn = movedIn_;
@@ -546,6 +556,17 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringL
     size_t n = list.size(), room = 0;
     uint8_t sink = 0; // where a spring not taken writes its flag
     for (Index p : moved) room += start[p + 1] - start[p];
+    if (listingAvx2_ && alone) {
+#ifndef NDEBUG
+        for (Index p : moved) // the kernel tests the plain limit (listingAvx2_)
+            for (uint32_t k = start[p]; k < start[p + 1]; ++k) assert(!((flags[p] | flags[endOther[k]]) & kTouched));
+#endif
+        list.resize(n + room + 8); // the kernel stores eight entries at a time
+        const ListingArrays arrays{start, endSpring, endOther, endRest, x, movedIn, listed, done};
+        list.resize(listAvx2(arrays, moved.data(), moved.size(), stamp, list.data(), n));
+        listingsAvx2 += !moved.empty();
+        return;
+    }
     list.resize(n + room);
     Index* out = list.data();
     for (Index p : moved) {
@@ -553,10 +574,9 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringL
         const uint8_t fp = flags[p];
         const uint32_t k0 = start[p], k1 = start[p + 1];
         for (uint32_t k = k0; k < k1; ++k) {
-            const LimitCache::SpringEnd e = ends[k];
-            const Index i = e.spring, q = e.other;
+            const Index i = endSpring[k], q = endOther[k];
             const bool fromOtherEnd = (q < p) & (movedIn[q] == stamp);
-            const bool over = exceedsLimit(fp | flags[q], e.rest, (x[q] - xp).squaredNorm(), done, heldDone);
+            const bool over = exceedsLimit(fp | flags[q], endRest[k], (x[q] - xp).squaredNorm(), done, heldDone);
             // Relaxed atomics (plain byte moves): under regionPasses the thread that moved q may be
             // taking this spring now, from its end; this one reads the flag but writes it only if it
             // takes the spring (a write back of the flag read would undo the other thread's).
@@ -605,7 +625,7 @@ void LimitSolve::passes(int t, int nt) {
             if (t == 0) {
                 moved[0].clear();
                 work_[0] = gaussSeidelPass(active[0], pass % 2 == 1, stamp, moved[0]);
-                if (another) expand(moved[0], stamp, active[0]);
+                if (another) expand(moved[0], stamp, active[0], true);
                 for (int k = 1; k < nt; ++k) work_[k] = 0;
             }
         } else if (total < kSerialList || nt == 1) {
@@ -618,7 +638,7 @@ void LimitSolve::passes(int t, int nt) {
                 moved[0].clear();
                 applyCorrections(touched, corr, corrV, 1, [](Index) { return true; }, x_, v_, movedIn_, stamp,
                                  moved[0]);
-                if (another) expand(moved[0], stamp, active[0]);
+                if (another) expand(moved[0], stamp, active[0], true);
                 work_[0] = corrected;
                 for (int k = 1; k < nt; ++k) work_[k] = 0;
             }
@@ -632,7 +652,7 @@ void LimitSolve::passes(int t, int nt) {
             auto mine = [&](Index p) { return p >= pc.begin && p < pc.end; };
             applyCorrections(touched, corr, corrV, nt, mine, x_, v_, movedIn_, stamp, moved[t]);
             parallelBarrier(nt); // positions and stamps complete
-            if (another) expand(moved[t], stamp, list);
+            if (another) expand(moved[t], stamp, list, false);
         }
         parallelBarrier(nt); // work_[] complete
         if (correctedNothing(t, nt, pass)) break;
@@ -736,7 +756,7 @@ void LimitSolve::regionPasses(int t, int nt) {
                 const SpringList& kept = T_.regionLists[k][joining];
                 list.insert(list.end(), kept.begin(), kept.end());
             }
-        if (another) expand(moved, stamp, list);
+        if (another) expand(moved, stamp, list, false);
         countByBin(t, list);
         work_[t] = corrected;
         parallelBarrier(nt); // work_[], lists and their counts complete
@@ -794,8 +814,8 @@ void markStretchBand(const StepContext& ctx, Cloth& cloth, StepState& state) {
     for (size_t k = 0; k < queue.size(); ++k) { // shortest rest distances, relaxed in queue order
         const Index p = queue[k];
         for (uint32_t e = C.springStart[p]; e < C.springStart[p + 1]; ++e) {
-            const Index q = C.ends[e].other;
-            const float d = dist[p] + C.ends[e].rest;
+            const Index q = C.endOther[e];
+            const float d = dist[p] + C.endRest[e];
             if (d > width || d >= dist[q]) continue;
             if (dist[q] == kFar && !(cloth.flags[q] & kTouched)) band.push_back(q);
             dist[q] = d;
@@ -835,20 +855,20 @@ void capTensionUnderBall(const StepContext& ctx, Cloth& cloth, StepState& state)
         if (seen[p] != 0.f) seen[p] = 0.f, touched.push_back(p);
     for (Index p : touched) {
         for (uint32_t e = C.springStart[p]; e < C.springStart[p + 1]; ++e) {
-            const LimitCache::SpringEnd end = C.ends[e];
-            const Index q = end.other;
-            if (!(end.rest < gauge) || (seen[q] == 0.f && q < p)) continue; // each spring once
+            const Index q = C.endOther[e];
+            const float rest = C.endRest[e];
+            if (!(rest < gauge) || (seen[q] == 0.f && q < p)) continue; // each spring once
             const Vec3 d = cloth.x[q] - cloth.x[p];
-            const float len = d.norm(), over = len - end.rest * strength;
+            const float len = d.norm(), over = len - rest * strength;
             if (!(over > 0.f)) continue;
             // The force was computed at the start of the sub-step (x - v dt): never take back more
             // than it was. Taken from the length now alone, a spring the sub-step stretched from
             // below the threshold got a push apart it had not been pulled by, and stretched further
             // next time (ball-r2-v3 at 96 a side blew up with gravity at -9.8099).
             const float startLen = ((cloth.x[q] - cloth.v[q] * dt) - (cloth.x[p] - cloth.v[p] * dt)).norm();
-            const float excess = std::min(over, startLen - end.rest * strength);
+            const float excess = std::min(over, startLen - rest * strength);
             if (!(excess > 0.f)) continue;
-            const Vec3 kick = d * (S.k[S.entryOf[end.spring]] * excess * dt / len); // impulse per unit 1/mass
+            const Vec3 kick = d * (S.k[S.entryOf[C.endSpring[e]]] * excess * dt / len); // impulse per unit 1/mass
             const float wp = cloth.invMass[p], wq = cloth.invMass[q];
             cloth.v[p] -= wp * kick, cloth.x[p] -= (wp * dt) * kick;
             cloth.v[q] += wq * kick, cloth.x[q] += (wq * dt) * kick;
@@ -878,10 +898,10 @@ float gaugeStrain(const LimitCache& C, const Cloth& cloth, Index s, float gauge)
         double bestCos = kStraight;
         float bestRest = 0.f;
         for (uint32_t e = C.springStart[p]; e < C.springStart[p + 1]; ++e) {
-            const Index q = C.ends[e].other;
+            const Index q = C.endOther[e];
             if (q == from[side]) continue;
             const double c = (cloth.rest[q] - cloth.rest[p]).normalized().dot(dir);
-            if (c > bestCos) bestCos = c, best = q, bestRest = C.ends[e].rest;
+            if (c > bestCos) bestCos = c, best = q, bestRest = C.endRest[e];
         }
         if (best == kNone) {
             open[side] = false;
@@ -937,6 +957,7 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
     ctx.profile->limitRegionPasses += uint64_t(solve.regionPassesRun);
     ctx.profile->limitTethersSkipped += solve.tethersSkipped;
     ctx.profile->limitExpandSkipped += solve.expandSkipped;
+    ctx.profile->limitListingsAvx2 += uint64_t(solve.listingsAvx2);
     LimitCache& C = state.limit;
     if (solve.prefilterFailed) C.prefilterWait = kPrefilterWait;
     else if (C.prefilterWait > 0) --C.prefilterWait;

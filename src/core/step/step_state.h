@@ -102,15 +102,15 @@ struct LimitCache {
     std::array<TetherSet, kTetherSets> tethers;
     uint32_t depth = 0;        // springs from the anchors to the farthest particle reached
     float meanRest = 0;        // m, mean rest length of the structural springs
-    // Structural springs of particle p: ends[springStart[p] .. springStart[p + 1]), each with its
-    // other end and rest length beside it (what the limit's listing and the tethers' search read,
-    // without the spring): one cache line holds a particle's row.
-    struct SpringEnd {
-        Index spring, other;
-        float rest; // m
-    };
+    // Structural springs of particle p: entries springStart[p] .. springStart[p + 1] of three arrays,
+    // each spring with its other end and rest length (what the limit's listing and the tethers'
+    // search read, without the spring). Three arrays, not one of structs: the AVX2 listing
+    // (limit_expand.h) loads eight entries of each at once; kEndsPadding entries (spring 0,
+    // particle 0, rest 0) follow the last row, so that it may load past a row's end.
+    static constexpr size_t kEndsPadding = 8;
     std::vector<uint32_t> springStart;
-    std::vector<SpringEnd> ends;
+    std::vector<Index> endSpring, endOther;
+    std::vector<float> endRest; // m
     // Per particle: its bin of rest position, kRegionBins of equal width along the axis whose bins
     // follow the numbering best (buildRegionBins, only where Gauss-Seidel runs on several threads;
     // limit.cpp, regionPasses: its regions are runs of bins). By rest position, not by index, so
@@ -119,7 +119,9 @@ struct LimitCache {
     std::vector<uint8_t> regionBin;
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
-    std::vector<uint8_t> listed; // per structural spring: on a Jacobi list (all 0 between sub-steps)
+    // Per structural spring: on a list of the passes (all 0 between sub-steps); then kListedPadding
+    // zero bytes (limit_expand.h reads each flag as the low byte of a word).
+    std::vector<uint8_t> listed;
     // Per structural spring: a tear candidate of this sub-step's scan, which the passes leave alone
     // (all 0 between sub-steps).
     std::vector<uint8_t> candidate;

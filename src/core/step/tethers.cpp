@@ -1,6 +1,7 @@
 // Tether paths: a breadth-first search over structural springs from a set of anchors at once.
 // Within a breadth-first layer a particle keeps the shortest of the paths that reach it.
 #include "tethers.h"
+#include "limit_expand.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +32,8 @@ uint32_t breadthFirst(const Cloth& cloth, const LimitCache& t, const std::vector
     Index* parent = set.parent.data();
     Reach* r = reach.data();
     const uint32_t* start = t.springStart.data();
-    const LimitCache::SpringEnd* ends = t.ends.data();
+    const Index* endOther = t.endOther.data();
+    const float* endRest = t.endRest.data();
     size_t queued = 0;
     for (Index p : sources) {
         r[p] = Reach{0, p};
@@ -50,8 +52,8 @@ uint32_t breadthFirst(const Cloth& cloth, const LimitCache& t, const std::vector
             // row order, not through the spring. Within a layer a particle keeps the shortest of
             // the paths that reach it (the first of equal ones).
             for (uint32_t k = start[p], k1 = start[p + 1]; k < k1; ++k) {
-                const Index o = ends[k].other;
-                const float len = lp + ends[k].rest;
+                const Index o = endOther[k];
+                const float len = lp + endRest[k];
                 if (r[o].layer == ~0u) {
                     r[o].layer = next;
                     order[queued++] = o;
@@ -105,17 +107,23 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     }
     for (size_t p = 0; p < n; ++p) start[p + 1] += start[p];
     std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    t.ends.resize(start[n]);
+    const size_t entries = start[n] + LimitCache::kEndsPadding;
+    t.endSpring.assign(entries, 0);
+    t.endOther.assign(entries, 0);
+    t.endRest.assign(entries, 0.f);
     for (Index i = 0; i < cloth.springs.size(); ++i) {
         const Spring& s = cloth.springs[i];
         for (const auto& [end, other] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}}) {
-            t.ends[fill[end]++] = LimitCache::SpringEnd{i, other, s.rest};
+            const uint32_t k = fill[end]++;
+            t.endSpring[k] = i;
+            t.endOther[k] = other;
+            t.endRest[k] = s.rest;
         }
     }
     t.regionBin.clear(); // built when the passes run on several threads (buildRegionBins)
     t.moved.assign(n, 0);
     t.passStamp = 0;
-    t.listed.assign(cloth.springs.size(), 0);
+    t.listed.assign(cloth.springs.size() + kListedPadding, 0);
     t.candidate.assign(cloth.springs.size(), 0);
     double restSum = 0;
     for (const Spring& s : cloth.springs) restSum += s.rest;
