@@ -285,8 +285,12 @@ TEST(Limit, TheSkipsOfTheTethersAndOfTheListingAfterThemChangeNoBit) {
 // particle's row at a time (AVX2, limit_expand.h), and it must list the same springs in the same
 // order as the scalar loop (CLOTHTEAR_LISTING_KERNEL=scalar): the same bits, while the kernel ran.
 // Cases: the pull sheet torn by its hand at 60 deg at two resolutions (the passes run to their cap
-// every sub-step, as under the drag tool), and a fan whose centre has twelve springs (a row longer
-// than eight: two loads) pulled out by one particle of its rim.
+// every sub-step, as under the drag tool), a thesis ball tearing through (the springs under it held
+// at their held length: the kernel reads kTouched from LimitCache::touched), and a fan whose centre
+// has twelve springs (a row longer than eight: two loads). A kernel reading only a row's first eight
+// fails the pull and the fan, one taking the held length where no ball is (and the limit under one)
+// fails the ball. (One listing a spring more is not seen: the pass drops a spring it finds within
+// its limit, so the bits do not change.)
 struct ListingRun {
     uint64_t hash = 0, tears = 0, avx2 = 0;
 };
@@ -354,6 +358,9 @@ TEST(Limit, TheListingEightSpringsAtATimeGivesTheScalarLoopsBits) {
         ASSERT_EQ(loadScene(w, "pull", sets), "");
         expectSameListing(w, 90, std::string("pull at ") + r, 90, true);
     }
+    World ball;
+    ASSERT_EQ(loadScene(ball, "ball-r1-v3-high", std::vector<std::string>{"sleep.enabled=false"}), "");
+    expectSameListing(ball, 60, "ball-r1-v3-high", 60, true);
     const World fan = fanThrownOut();
     ASSERT_EQ(fan.cloth.particleCount(), 25u);
     expectSameListing(fan, 30, "fan", 10, false);

@@ -274,9 +274,10 @@ private:
     // for the test that they change no bit.
     const bool skipsAllowed_;
     const bool regions_; // limitRegionsAllowed
-    // expand may run the AVX2 listing (limit_expand.h): the CPU has it and no particle is under a
-    // ball or in a stretch band this sub-step (the kernel tests the plain limit only).
+    // expand may run the AVX2 listing (limit_expand.h): the CPU has it. touched_: LimitCache::touched
+    // where a particle is under a ball or in the stretch band this sub-step, else null.
     const bool listingAvx2_;
+    const uint8_t* touched_;
     const uint32_t stamp0_;
     Vec3* x_;
     Vec3* v_;
@@ -312,7 +313,8 @@ LimitSolve::LimitSolve(const StepContext& ctx, Cloth& cloth, StepState& state)
       gaussSeidel_(ctx.settings->limit.solver == LimitSolver::GaussSeidel),
       holdsOvershoot_(ctx.limiting && !driversMove(*ctx.drivers)), skipsAllowed_(limitSkipsAllowed()),
       regions_(limitRegionsAllowed()),
-      listingAvx2_(listingAvx2Available() && state.contacts.empty() && state.stretchBand.empty()),
+      listingAvx2_(ctx.limiting && listingAvx2Available()),
+      touched_(state.contacts.empty() && state.stretchBand.empty() ? nullptr : state.limit.touched.data()),
       stamp0_(state.limit.passStamp), x_(cloth.x.data()), v_(cloth.v.data()), invMass_(cloth.invMass.data()),
       flags_(cloth.flags.data()), springs_(cloth.springs.data()),
       listed_(ctx.limiting ? state.limit.listed.data() : nullptr),
@@ -558,11 +560,14 @@ void LimitSolve::expand(const std::vector<Index>& moved, uint32_t stamp, SpringL
     for (Index p : moved) room += start[p + 1] - start[p];
     if (listingAvx2_ && alone) {
 #ifndef NDEBUG
-        for (Index p : moved) // the kernel tests the plain limit (listingAvx2_)
-            for (uint32_t k = start[p]; k < start[p + 1]; ++k) assert(!((flags[p] | flags[endOther[k]]) & kTouched));
+        for (Index p : moved) // the kernel reads kTouched from LimitCache::touched (phaseLimit)
+            for (uint32_t k = start[p]; k < start[p + 1]; ++k) {
+                const Index q = endOther[k];
+                assert(bool((flags[p] | flags[q]) & kTouched) == (touched_ && (touched_[p] | touched_[q])));
+            }
 #endif
         list.resize(n + room + 8); // the kernel stores eight entries at a time
-        const ListingArrays arrays{start, endSpring, endOther, endRest, x, movedIn, listed, done};
+        const ListingArrays arrays{start, endSpring, endOther, endRest, x, movedIn, listed, done, touched_, heldDone};
         list.resize(listAvx2(arrays, moved.data(), moved.size(), stamp, list.data(), n));
         listingsAvx2 += !moved.empty();
         return;
@@ -948,8 +953,18 @@ void phaseLimit(const StepContext& ctx, Cloth& cloth, StepState& state) {
         buildRegionBins(cloth, state.limit); // regionPasses reads them
     markStretchBand(ctx, cloth, state);
     capTensionUnderBall(ctx, cloth, state);
+    // kTouched as bytes for the AVX2 listing (LimitCache::touched), set for the phase.
+    std::vector<uint8_t>& touched = state.limit.touched;
+    auto markTouched = [&](uint8_t value) {
+        if (!ctx.limiting) return;
+        for (const BallContact& c : state.contacts)
+            for (Index p : cloth.triangles[c.triangle].p) touched[p] = value;
+        for (Index p : state.stretchBand) touched[p] = value;
+    };
+    markTouched(1);
     LimitSolve solve(ctx, cloth, state);
     solve.run();
+    markTouched(0);
     // The band lets go; the contacts' own particles keep their mark until the contact phase.
     for (Index p : state.stretchBand) cloth.flags[p] &= uint8_t(~kTouched);
     state.stretchBand.clear();

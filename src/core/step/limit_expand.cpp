@@ -40,7 +40,10 @@ const PackTable kPack;
 
 } // namespace
 
-__attribute__((target("avx2"))) size_t listAvx2(const ListingArrays& a, const Index* moved, size_t count,
+// kHeld: some particle is under a ball (a.touched set): each lane's limit is its held length where
+// either end is.
+template <bool kHeld>
+__attribute__((target("avx2"))) size_t listRows(const ListingArrays& a, const Index* moved, size_t count,
                                                  uint32_t stamp, Index* out, size_t n) {
     const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const __m256i stampV = _mm256_set1_epi32(int(stamp));
@@ -49,8 +52,12 @@ __attribute__((target("avx2"))) size_t listAvx2(const ListingArrays& a, const In
     const float* x = reinterpret_cast<const float*>(a.x);
     const int* movedIn = reinterpret_cast<const int*>(a.movedIn);
     const int* listedWords = reinterpret_cast<const int*>(a.listed); // read at byte offsets (scale 1)
+    const int* touchedWords = reinterpret_cast<const int*>(a.touched);
+    const __m256 limitRatio = _mm256_set1_ps(a.heldDone.limitRatio), excessRatio = _mm256_set1_ps(a.heldDone.excessRatio);
+    const __m256 gauge = _mm256_set1_ps(a.heldDone.gauge);
     for (size_t m = 0; m < count; ++m) {
         const Index p = moved[m];
+        const __m256i pTouched = _mm256_set1_epi32(kHeld ? int(a.touched[p]) : 0);
         const __m256i pV = _mm256_set1_epi32(int(p));
         const __m256 px = _mm256_set1_ps(a.x[p].x()), py = _mm256_set1_ps(a.x[p].y()), pz = _mm256_set1_ps(a.x[p].z());
         for (uint32_t k = a.springStart[p], k1 = a.springStart[p + 1]; k < k1; k += 8) {
@@ -67,7 +74,17 @@ __attribute__((target("avx2"))) size_t listAvx2(const ListingArrays& a, const In
             // (x_q - x_p).squaredNorm() as Eigen sums a 3-vector: x^2 + (y^2 + z^2).
             const __m256 len2 =
                 _mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_add_ps(_mm256_mul_ps(dy, dy), _mm256_mul_ps(dz, dz)));
-            const __m256 limit = _mm256_mul_ps(rest, done);
+            __m256 limit = _mm256_mul_ps(rest, done);
+            if constexpr (kHeld) {
+                // heldDone(rest) = limitRatio rest + excessRatio max(rest, gauge), as HeldLength
+                // computes it (max_ps(gauge, rest) is std::max(rest, gauge), NaN included).
+                const __m256 held = _mm256_add_ps(_mm256_mul_ps(limitRatio, rest),
+                                                  _mm256_mul_ps(excessRatio, _mm256_max_ps(gauge, rest)));
+                const __m256i qTouched = _mm256_and_si256(_mm256_i32gather_epi32(touchedWords, q, 1), lowByte);
+                const __m256i underBall = _mm256_xor_si256(
+                    _mm256_cmpeq_epi32(_mm256_or_si256(qTouched, pTouched), _mm256_setzero_si256()), _mm256_set1_epi32(-1));
+                limit = _mm256_blendv_ps(limit, held, _mm256_castsi256_ps(underBall));
+            }
             const __m256i over = _mm256_castps_si256(_mm256_cmp_ps(len2, _mm256_mul_ps(limit, limit), _CMP_GT_OQ));
             // Listed from the other end: q < p and this pass moved q too.
             const __m256i fromOther = _mm256_and_si256(_mm256_cmpgt_epi32(pV, q),
@@ -85,6 +102,10 @@ __attribute__((target("avx2"))) size_t listAvx2(const ListingArrays& a, const In
         }
     }
     return n;
+}
+
+size_t listAvx2(const ListingArrays& a, const Index* moved, size_t count, uint32_t stamp, Index* out, size_t n) {
+    return a.touched ? listRows<true>(a, moved, count, stamp, out, n) : listRows<false>(a, moved, count, stamp, out, n);
 }
 #else
 size_t listAvx2(const ListingArrays&, const Index*, size_t, uint32_t, Index*, size_t n) { return n; }

@@ -4,13 +4,14 @@
 // 2,500 springs (a 128 x 128 curtain): a quarter of the window's simulation thread while the hand
 // tears (bench/README.md, "The listing eight springs at a time").
 //
-// Here eight springs of a particle's row at a time with AVX2: their other ends, rest lengths, listed
-// flags and the other ends' positions and move stamps gathered, the same tests lane by lane, and the
-// taken springs' indices packed in row order. The list, the flags and so the passes come out to the
+// Here eight springs of a particle's row at a time with AVX2: their other ends and rest lengths
+// loaded, their listed flags and the other ends' positions, move stamps (and under a ball, touched
+// marks) gathered, the same tests lane by lane, and the taken springs' indices packed in row order. The list, the flags and so the passes come out to the
 // bit as the scalar loop's (the squared length in Eigen's order, no fused multiply-add); a test
 // compares the two.
 #pragma once
 #include "clothtear/cloth.h"
+#include "step_context.h"
 #include "step_state.h"
 
 #include <cstddef>
@@ -18,8 +19,9 @@
 
 namespace clothtear {
 
-// What a listing reads and writes. No particle may carry kTouched (no ball contact and no stretch
-// band this sub-step): the kernel tests every spring against the plain limit, rest x doneRatio.
+// What a listing reads and writes. A spring with an end under a ball (kTouched) is over when longer
+// than its held length (heldLength), any other when longer than rest x doneRatio (limit.cpp,
+// exceedsLimit).
 struct ListingArrays {
     const uint32_t* springStart; // LimitCache::springStart, endSpring, endOther and endRest (padded)
     const Index* endSpring;
@@ -29,10 +31,14 @@ struct ListingArrays {
     const uint32_t* movedIn;     // LimitCache::moved: the pass's stamp on each particle it moved
     uint8_t* listed;             // LimitCache::listed, with kListedPadding bytes past the springs
     float doneRatio;             // a spring longer than rest x doneRatio is over
+    // Per particle, with kListedPadding bytes past the last: non-zero where kTouched is set
+    // (LimitCache::touched); null when no particle is.
+    const uint8_t* touched;
+    HeldLength heldDone; // under a ball: over when longer than heldDone(rest)
 };
 
-// LimitCache::listed has this many zero bytes after its last spring's: the kernel reads each flag
-// as the low byte of a 32-bit word.
+// LimitCache::listed and LimitCache::touched have this many zero bytes after their last entry: the
+// kernel reads each flag as the low byte of a 32-bit word.
 inline constexpr size_t kListedPadding = 3;
 
 // Does this CPU run listAvx2 (CLOTHTEAR_LISTING_KERNEL=scalar says no, for the tests and benchmarks

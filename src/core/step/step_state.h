@@ -122,6 +122,10 @@ struct LimitCache {
     // Per structural spring: on a list of the passes (all 0 between sub-steps); then kListedPadding
     // zero bytes (limit_expand.h reads each flag as the low byte of a word).
     std::vector<uint8_t> listed;
+    // Per particle, during the limit phase: 1 where kTouched is set (the corners of the ball
+    // contacts and the stretch band), else 0 (all 0 between limit phases); kListedPadding zero bytes
+    // follow: the AVX2 listing's copy of the flag (limit_expand.h).
+    std::vector<uint8_t> touched;
     // Per structural spring: a tear candidate of this sub-step's scan, which the passes leave alone
     // (all 0 between sub-steps).
     std::vector<uint8_t> candidate;

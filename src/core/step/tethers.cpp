@@ -124,6 +124,7 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     t.moved.assign(n, 0);
     t.passStamp = 0;
     t.listed.assign(cloth.springs.size() + kListedPadding, 0);
+    t.touched.assign(n + kListedPadding, 0);
     t.candidate.assign(cloth.springs.size(), 0);
     double restSum = 0;
     for (const Spring& s : cloth.springs) restSum += s.rest;
