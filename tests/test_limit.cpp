@@ -353,8 +353,9 @@ TEST(Limit, TheListingEightSpringsAtATimeGivesTheScalarLoopsBits) {
     const test::OmpThreads one(1);
     for (const char* r : {"40", "64"}) {
         World w;
-        const std::vector<std::string> sets{std::string("cloth.resolution_x=") + r, std::string("cloth.resolution_y=") + r,
-                                            "pull.angle=60", "pull.speed=2", "sleep.enabled=false"};
+        const std::vector<std::string> sets{std::string("cloth.resolution_x=") + r,
+                                            std::string("cloth.resolution_y=") + r, "pull.angle=60", "pull.speed=2",
+                                            "sleep.enabled=false"};
         ASSERT_EQ(loadScene(w, "pull", sets), "");
         expectSameListing(w, 90, std::string("pull at ") + r, 90, true);
     }

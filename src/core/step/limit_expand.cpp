@@ -53,7 +53,8 @@ __attribute__((target("avx2"))) size_t listRows(const ListingArrays& a, const In
     const int* movedIn = reinterpret_cast<const int*>(a.movedIn);
     const int* listedWords = reinterpret_cast<const int*>(a.listed); // read at byte offsets (scale 1)
     const int* touchedWords = reinterpret_cast<const int*>(a.touched);
-    const __m256 limitRatio = _mm256_set1_ps(a.heldDone.limitRatio), excessRatio = _mm256_set1_ps(a.heldDone.excessRatio);
+    const __m256 limitRatio = _mm256_set1_ps(a.heldDone.limitRatio);
+    const __m256 excessRatio = _mm256_set1_ps(a.heldDone.excessRatio);
     const __m256 gauge = _mm256_set1_ps(a.heldDone.gauge);
     for (size_t m = 0; m < count; ++m) {
         const Index p = moved[m];
@@ -81,17 +82,18 @@ __attribute__((target("avx2"))) size_t listRows(const ListingArrays& a, const In
                 const __m256 held = _mm256_add_ps(_mm256_mul_ps(limitRatio, rest),
                                                   _mm256_mul_ps(excessRatio, _mm256_max_ps(gauge, rest)));
                 const __m256i qTouched = _mm256_and_si256(_mm256_i32gather_epi32(touchedWords, q, 1), lowByte);
-                const __m256i underBall = _mm256_xor_si256(
-                    _mm256_cmpeq_epi32(_mm256_or_si256(qTouched, pTouched), _mm256_setzero_si256()), _mm256_set1_epi32(-1));
+                const __m256i free = _mm256_cmpeq_epi32(_mm256_or_si256(qTouched, pTouched), _mm256_setzero_si256());
+                const __m256i underBall = _mm256_xor_si256(free, _mm256_set1_epi32(-1));
                 limit = _mm256_blendv_ps(limit, held, _mm256_castsi256_ps(underBall));
             }
             const __m256i over = _mm256_castps_si256(_mm256_cmp_ps(len2, _mm256_mul_ps(limit, limit), _CMP_GT_OQ));
             // Listed from the other end: q < p and this pass moved q too.
-            const __m256i fromOther = _mm256_and_si256(_mm256_cmpgt_epi32(pV, q),
-                                                       _mm256_cmpeq_epi32(_mm256_i32gather_epi32(movedIn, q, 4), stampV));
+            const __m256i qMoved = _mm256_cmpeq_epi32(_mm256_i32gather_epi32(movedIn, q, 4), stampV);
+            const __m256i fromOther = _mm256_and_si256(_mm256_cmpgt_epi32(pV, q), qMoved);
             const __m256i flag = _mm256_and_si256(_mm256_i32gather_epi32(listedWords, spring, 1), lowByte);
-            const __m256i take = _mm256_andnot_si256(
-                fromOther, _mm256_and_si256(_mm256_and_si256(valid, over), _mm256_cmpeq_epi32(flag, _mm256_setzero_si256())));
+            const __m256i notListed = _mm256_cmpeq_epi32(flag, _mm256_setzero_si256());
+            const __m256i take =
+                _mm256_andnot_si256(fromOther, _mm256_and_si256(_mm256_and_si256(valid, over), notListed));
             const unsigned mask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(take)));
             if (mask == 0) continue;
             const __m256i pack = _mm256_load_si256(reinterpret_cast<const __m256i*>(kPack.lanes[mask]));

@@ -6,9 +6,9 @@
 //
 // Here eight springs of a particle's row at a time with AVX2: their other ends and rest lengths
 // loaded, their listed flags and the other ends' positions, move stamps (and under a ball, touched
-// marks) gathered, the same tests lane by lane, and the taken springs' indices packed in row order. The list, the flags and so the passes come out to the
-// bit as the scalar loop's (the squared length in Eigen's order, no fused multiply-add); a test
-// compares the two.
+// marks) gathered, the same tests lane by lane, and the taken springs' indices packed in row order.
+// The list, the flags and so the passes come out to the bit as the scalar loop's (the squared
+// length in Eigen's order, no fused multiply-add); a test compares the two.
 #pragma once
 #include "clothtear/cloth.h"
 #include "step_context.h"
