@@ -281,9 +281,9 @@ TEST(Limit, TheSkipsOfTheTethersAndOfTheListingAfterThemChangeNoBit) {
 // ============================================================================================ [LISTING]
 
 // After each pass the limit lists the springs of the particles the pass moved that are now over the
-// limit (limit.cpp, expand). On one thread with no ball touching that runs eight springs of a
-// particle's row at a time (AVX2, limit_expand.h), and it must list the same springs in the same
-// order as the scalar loop (CLOTHTEAR_LISTING_KERNEL=scalar): the same bits, while the kernel ran.
+// limit (limit.cpp, expand). Where one thread lists that runs eight springs of a particle's row at
+// a time (AVX2, limit_expand.h), and it must list the same springs in the same order as the scalar
+// loop (CLOTHTEAR_LISTING_KERNEL=scalar): the same bits, while the kernel ran.
 // Cases: the pull sheet torn by its hand at 60 deg at two resolutions (the passes run to their cap
 // every sub-step, as under the drag tool), a thesis ball tearing through (the springs under it held
 // at their held length: the kernel reads kTouched from LimitCache::touched), and a fan whose centre
