@@ -29,17 +29,13 @@ struct ListingArrays {
     const float* endRest;
     const Vec3* x;               // positions
     const uint32_t* movedIn;     // LimitCache::moved: the pass's stamp on each particle it moved
-    uint8_t* listed;             // LimitCache::listed, with kListedPadding bytes past the springs
+    uint8_t* listed;             // LimitCache::listed (padded: LimitCache::kFlagPadding)
     float doneRatio;             // a spring longer than rest x doneRatio is over
-    // Per particle, with kListedPadding bytes past the last: non-zero where kTouched is set
-    // (LimitCache::touched); null when no particle is.
+    // Per particle (LimitCache::touched, padded): non-zero where kTouched is set; null when no
+    // particle is.
     const uint8_t* touched;
     HeldLength heldDone; // under a ball: over when longer than heldDone(rest)
 };
-
-// LimitCache::listed and LimitCache::touched have this many zero bytes after their last entry: the
-// kernel reads each flag as the low byte of a 32-bit word.
-inline constexpr size_t kListedPadding = 3;
 
 // Does this CPU run listAvx2 (CLOTHTEAR_LISTING_KERNEL=scalar says no, for the tests and benchmarks
 // that compare the two)?

@@ -119,12 +119,14 @@ struct LimitCache {
     std::vector<uint8_t> regionBin;
     // Work arrays, sized with the cloth.
     std::vector<uint32_t> moved; // per particle: the Jacobi pass (stamp) that last moved it
-    // Per structural spring: on a list of the passes (all 0 between sub-steps); then kListedPadding
-    // zero bytes (limit_expand.h reads each flag as the low byte of a word).
+    // `listed` and `touched` have kFlagPadding zero bytes after their last entry: the AVX2 listing
+    // (limit_expand.h) reads each flag as the low byte of a 32-bit word.
+    static constexpr size_t kFlagPadding = 3;
+    // Per structural spring: on a list of the passes (all 0 between sub-steps).
     std::vector<uint8_t> listed;
     // Per particle, during the limit phase: 1 where kTouched is set (the corners of the ball
-    // contacts and the stretch band), else 0 (all 0 between limit phases); kListedPadding zero bytes
-    // follow: the AVX2 listing's copy of the flag (limit_expand.h).
+    // contacts and the stretch band), else 0 (all 0 between limit phases): the AVX2 listing's copy
+    // of the flag.
     std::vector<uint8_t> touched;
     // Per structural spring: a tear candidate of this sub-step's scan, which the passes leave alone
     // (all 0 between sub-steps).

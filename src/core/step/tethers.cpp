@@ -1,7 +1,6 @@
 // Tether paths: a breadth-first search over structural springs from a set of anchors at once.
 // Within a breadth-first layer a particle keeps the shortest of the paths that reach it.
 #include "tethers.h"
-#include "limit_expand.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,8 +122,8 @@ void buildLimitCache(const Cloth& cloth, const std::vector<uint8_t>& anchor, Lim
     t.regionBin.clear(); // built when the passes run on several threads (buildRegionBins)
     t.moved.assign(n, 0);
     t.passStamp = 0;
-    t.listed.assign(cloth.springs.size() + kListedPadding, 0);
-    t.touched.assign(n + kListedPadding, 0);
+    t.listed.assign(cloth.springs.size() + LimitCache::kFlagPadding, 0);
+    t.touched.assign(n + LimitCache::kFlagPadding, 0);
     t.candidate.assign(cloth.springs.size(), 0);
     double restSum = 0;
     for (const Spring& s : cloth.springs) restSum += s.rest;
