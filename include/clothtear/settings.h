@@ -124,6 +124,8 @@ struct TearSettings {
     float seamStrength = 3.f;       // x threshold  springs touching a hem (pinned edge) tear at this multiple
     float gaugeLength = 0.125f;     // m       where no hand pulls, a shorter spring's strain is the mean strain
                                     //         of a line of springs this long through it (limit.cpp)
+    float tipRadius = 0.5f;         // m       a weak-point tear runs across the fabric's tension within this
+                                    //         distance of its tip (tear_tension.h); 0: across the tense spring
     int32_t maxPerStep = 64;        // count   cap on tears per sub-step
     bool validate = false;          // run the full topology validation after every tear
 };

@@ -90,6 +90,7 @@ const ParamInfo kParams[] = {
     CT_F("tear.weak_threshold", tear.weakThreshold, 0.02, 3, 0.001, 100, "", "Strain at which a spring touching a weak point tears", false),
     CT_F("tear.one_point_threshold", tear.onePointThreshold, 0.02, 3, 0.001, 100, "", "Strain that separates a one-point connection", false),
     CT_F("tear.gauge_length", tear.gaugeLength, 0, 0.5, 0, 100, "m", "Length of fabric a tear's strain is measured over where no hand pulls: a spring shorter than this tears when the mean strain of a line of springs this long through it reaches tear.threshold (under a ball it may stretch that far, its tension capped at the threshold's; a longer spring tears by its own strain), so a ball tears by metres of stretch, not by the strain of the one ring of springs it pulls on, whose width is the mesh spacing", false),
+    CT_F("tear.tip_radius", tear.tipRadius, 0, 2, 0, 100, "m", "A tear tip (weak point) runs on across the direction in which the fabric within this distance of it is stretched most (its tensile strain, by rest area), the same metres of cloth at every resolution; 0, or a pin or the hand that close: across the tense spring, as Onal 3.2.2", false),
     CT_I("tear.max_per_step", tear.maxPerStep, 1, 10000, 1, 1000000, "", "Cap on tears per sub-step", false),
     CT_B("tear.validate", tear.validate, "Validate every topology invariant after each tear (slow)", false),
     CT_B("check.finite", check.finite, "Check for NaN/Inf after every phase of every sub-step; the report names the phase and particle (on in Debug builds)", false),

@@ -12,6 +12,7 @@
 // lumped from triangles) never change.
 #include "clothtear/tear.h"
 
+#include "tear_tension.h"
 #include "tear_topology.h"
 
 #include <algorithm>
@@ -111,8 +112,12 @@ Vec2d uvAtParticle(const Cloth& c, Index p) {
 //   2. the spring that resists most: largest projection of its force on -t;
 //   3. the candidates are the springs between sT and that spring on the side where the two are
 //      connected through triangles (the other side contains the existing tear);
-//   4. among them, the one with the smallest angle to the axis perpendicular to t.
+//   4. among them, the one with the smallest angle to the axis perpendicular to the tension.
 // The triangles on the far side of the chosen spring are re-attached to a new copy of p.
+// Step 4's tension is the fabric's within tear.tip_radius of p (fabricTensionAxis, tear_tension.h:
+// the direction stretched most, the same metres of cloth at every resolution), t where that is not
+// defined (radius 0, a held particle that close, no tension); steps 1-3 keep t, which chooses the
+// side the tear continues on.
 bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx) {
     const Spring tense = c.springs[sT]; // for the event (the split keeps its rest length and weight)
     const std::vector<Fan> fans = fansAround(c, p);
@@ -144,12 +149,14 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
     }
     if (iRes < 0) return false;
     const int lo = std::min(iT, iRes), hi = std::max(iT, iRes);
+    Vec3 tension = fabricTensionAxis(c, p, fan.tris, ctx.settings.tipRadius);
+    if (tension.squaredNorm() == 0.f) tension = t;
     int iC = -1;
     float bestCos = 2.f;
     for (int j = lo + 1; j < hi; ++j) {
         const Spring& sp = c.springs[fan.spokes[j]];
         const Vec3 u = (c.x[otherEnd(sp, p)] - c.x[p]).normalized();
-        const float cosToTension = std::abs(u.dot(t)); // small = close to the perpendicular axis
+        const float cosToTension = std::abs(u.dot(tension)); // small = close to the perpendicular axis
         if (cosToTension < bestCos) bestCos = cosToTension, iC = j;
     }
     if (iC < 0) return false;

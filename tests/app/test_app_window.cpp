@@ -191,11 +191,12 @@ TEST(AppWindow, StatsPaneRowsFitItsWidth) {
     const auto report = readJson(json);
     ASSERT_GT(report["tears_total"].get<int>(), 0) << "the throw must tear for the rows to fill";
     EXPECT_LE(report["app"]["stats_pane_overflow_px"].get<double>(), 0.0);
-    // The pieces list opened on a cut cloth with a scrap of two triangles (the README's delete.txt):
-    // its row, "4.29e-05 m^2  0.00858 g  2 tri.", ran 12 px past the pane before.
+    // The pieces list opened on a cut cloth with a small piece: the knife across a corner of the
+    // corners cloth (corner_cut.txt: 19 triangles, 0.00685 m^2 come off). The README's delete.txt
+    // left a scrap of two triangles by its cut until weak-point tears read the fabric's tension
+    // (tear.tip_radius); that row, "4.29e-05 m^2  0.00858 g  2 tri.", ran 12 px past the pane before.
     const fs::path pieces = tempDir() / "stats_pane_pieces.json";
-    r = runApp("--scene corners --script '" + std::string(CLOTHTEAR_SCREENSHOT_SCRIPTS) + "/delete.txt' --json '" +
-               pieces.string() + "'");
+    r = runApp("--scene corners --script '" + data("corner_cut.txt") + "' --json '" + pieces.string() + "'");
     ASSERT_EQ(r.status, 0) << r.output;
     const auto cut = readJson(pieces);
     ASSERT_GE(cut["pieces"]["count"].get<int>(), 2) << "the knife must leave pieces for the list to show";
