@@ -48,3 +48,8 @@ shot drop drop
 for n in 40 80 160; do
     shotWith "drag$n" drag curtain --set cloth.resolution_x=$n --set cloth.resolution_y=$n
 done
+# The pull scene torn sideways for 5 s at three resolutions (issue 13 goal 1: the rip as long in metres).
+for n in 40 80 160; do
+    xvfb-run -a -s "-screen 0 1280x720x24" "$app" --scene pull --set pull.angle=90 --set cloth.resolution_x=$n \
+        --set cloth.resolution_y=$n --frames 300 --screenshot "$dir/pull$n.png"
+done

@@ -292,7 +292,8 @@ TEST(AppWindow, ReplayIsBitIdenticalRunToRun) {
 // keeps smaller ones on: minLooseArea, cloth.h, 5.2 rest triangles of a grid). At 40 a tear front
 // halving the same corner again had set loose a 1.6 cm^2 sliver (1/8 of a rest triangle;
 // minTearSplitRest, cloth.h); at 40 and 80 the rip leaves the lower right part hanging by the right
-// edge. The rip leans the same way at both (issue 13 goal 1): 47 and 42 deg from horizontal; 24 and
+// edge. The rip leans the same way at both (issue 13 goal 1): 42 and 38 deg from horizontal (47 and
+// 42 while a tip cut across its tensest spring, not the fabric's tension: tear.tip_radius); 24 and
 // 40 when the limit's passes under the hand were a fixed 12, not an eighth of the cloth's depth
 // (limit.cpp, passCap; bench/README.md, "The hand's passes by depth").
 TEST(AppWindow, ADragRipsWithoutScraps) {
