@@ -50,6 +50,11 @@ int springsBetween(const Cloth& c, const Vec3d& ra, const Vec3d& rb) {
     return n;
 }
 
+// Spring s as a tear candidate at its current strain.
+TearCandidate candidateAt(const Cloth& c, Index s) {
+    return {s, float((c.x[c.springs[s].b] - c.x[c.springs[s].a]).norm() / c.springs[s].rest - 1.f)};
+}
+
 // Stretches the cloth by 1 + e along unit direction d (through the origin): x = r + e (r . d) d.
 void stretchAlong(Cloth& c, const Vec3d& d, double e) {
     for (Index p = 0; p < c.particleCount(); ++p) c.x[p] = (c.rest[p] + e * c.rest[p].dot(d) * d).cast<float>();
@@ -175,8 +180,7 @@ void expectWeakTearCuts(int tense, int across) {
     TearSettings settings;
     TearLog log;
     const TearContext ctx{settings, 0.0, &log};
-    std::vector<TearCandidate> candidates{{s, float((c.x[c.springs[s].b] - c.x[c.springs[s].a]).norm() /
-                                                   c.springs[s].rest - 1.f)}};
+    std::vector<TearCandidate> candidates{candidateAt(c, s)};
     EXPECT_NEAR(candidates[0].strain, 0.5f, 1e-5f);
     ASSERT_EQ(tearSprings(c, candidates, ctx), 1);
     EXPECT_EQ(log.counts[int(TearMode::WeakPoint)], 1u) << "the tear must go through the weak point";
@@ -207,8 +211,7 @@ double cutSpokeUnderStretchAlongX(float tipRadius, const Eigen::Matrix3d& turn, 
     settings.tipRadius = tipRadius;
     TearLog log;
     const TearContext ctx{settings, 0.0, &log};
-    std::vector<TearCandidate> candidates{{s, float((c.x[c.springs[s].b] - c.x[c.springs[s].a]).norm() /
-                                                   c.springs[s].rest - 1.f)}};
+    std::vector<TearCandidate> candidates{candidateAt(c, s)};
     EXPECT_EQ(tearSprings(c, candidates, ctx), 1);
     EXPECT_EQ(validateCloth(c), "");
     if (log.counts[int(TearMode::WeakPoint)] != 1) return -1;

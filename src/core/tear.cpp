@@ -149,7 +149,8 @@ bool weakTear(Cloth& c, Index p, Index sT, float strain, const TearContext& ctx)
     }
     if (iRes < 0) return false;
     const int lo = std::min(iT, iRes), hi = std::max(iT, iRes);
-    Vec3 tension = fabricTensionAxis(c, p, fan.tris, ctx.settings.tipRadius);
+    // With one candidate there is nothing to choose: the fabric is not read.
+    Vec3 tension = hi - lo > 2 ? fabricTensionAxis(c, p, fan.tris, ctx.settings.tipRadius) : Vec3::Zero();
     if (tension.squaredNorm() == 0.f) tension = t;
     int iC = -1;
     float bestCos = 2.f;
