@@ -175,6 +175,10 @@ Rip ripOf(const nlohmann::json& r) {
 // the hand at the first tear points 68-87 deg from horizontal at 30 and 60 deg (rest-frame
 // deformation gradients of the triangles within 0.45-1 m of the hand, at 40 and 80), so the rip
 // across it is within about 20 deg of horizontal. Pulled sideways (90 deg): the next test.
+// The margin at 30 deg is thin: at 40 a side the hand's flap comes free at 3.88-3.90 s (3.48 at one
+// of four speeds), 0.1 s before the 4 s read here, where at 80 it is out by 2.5-3.3 s. A change that
+// holds the coarse sheet's hand a little longer (the hand's passes spread over the frame did: 3.86-
+// 4.66 s) fails here with 1 piece against 2 (bench/README.md, "The hand's patch at 40 a side").
 TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
     for (int angle : {0, 30, 60}) {
         Rip rips[2];
