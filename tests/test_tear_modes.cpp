@@ -226,8 +226,8 @@ double cutSpokeUnderStretchAlongX(float tipRadius, const Eigen::Matrix3d& turn, 
 // the axis from the torn 45 deg spoke (now at 34 deg) and cuts the 135 deg spoke (now at 146 deg,
 // 22 deg from that spring's perpendicular; the 90 deg spoke is 34 deg from it). The same turned out
 // of the plane and spun in it (the strain is read in the fabric, the axis where the fabric is now,
-// as the spokes are compared). With a pin on
-// the fan (a held particle within the radius) the thesis's axis is kept.
+// as the spokes are compared). With a pin on the fan (a held particle within the radius) the
+// thesis's axis is kept.
 TEST(WeakPoint, TearRunsAcrossTheFabricsTensionNotTheTensestSpring) {
     const Eigen::Matrix3d flat = Eigen::Matrix3d::Identity();
     const Eigen::Matrix3d turned = (Eigen::AngleAxisd(0.7, Vec3d(0.3, 1, 0.2).normalized()) *

@@ -208,9 +208,9 @@ TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
 // mesh. With the limit's passes under a moving hand a fixed count (12), not a share of the depth
 // (limit.cpp, passCap), the hand's pull reached twice as far in metres at 40 as at 80: the 6 m sheet
 // at 40 tore 1 s later, at 13 deg, the 3 m one at 13 deg too (bench/README.md, "The hand's passes by
-// depth"). The rip's length on the 6 m sheet: the next test. On one thread, so that every machine checks the same runs: the rips
-// move with the round-off of the thread count, and on three or four threads the 3 m sheet's axes at
-// 40 and 80 are 11-14 deg apart and a 2 m^2 part comes off at 40 only. The first tears: the 6 m sheet
+// depth"). The rip's length on the 6 m sheet: the next test. On one thread, so that every machine
+// checks the same runs: the rips move with the round-off of the thread count, and on three or four
+// threads the 3 m sheet's axes at 40 and 80 are 11-14 deg apart and a 2 m^2 part comes off at 40 only. The first tears: the 6 m sheet
 // at 40 a side tears at 2.92-2.94 s, later than at 80 (its 10 sub-steps, `time.substeps`' floor; at
 // the guard's 7 it tears at 2.46-2.53 s: bench/README.md, "The sideways rip again"), and at 80 at
 // 2.46-2.57 s with round-off (gravity 1e-6 stronger: 2.46, 16 % before 40's): within 20 %.
@@ -240,7 +240,7 @@ TEST(TearScenes, PulledSidewaysTheRipLeansTheSameWayAtTwoResolutions) {
 // medians were 1.85 / 2.10 / 3.44 m and at 80 a side one run gave 1.5 m and the next 3.5 m; across
 // the fabric's tension within tear.tip_radius (tear_tension.h) they are 2.62 / 3.24 / 3.35, each
 // resolution's runs within 0.7 m of each other (bench/README.md, "The tear tip reads the fabric's
-// tension"). At 40 the rip starts 0.4 s later (its 10 sub-steps, the floor; the next test), which is
+// tension"). At 40 the rip starts 0.4 s later (its 10 sub-steps, the floor; the test above), which is
 // most of what it lacks. On one thread, as the test above.
 TEST(TearScenes, PulledSidewaysTheRipIsAsLongAtEveryResolution) {
     const int res[3] = {40, 80, 160};
