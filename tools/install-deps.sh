@@ -5,7 +5,8 @@ set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
           libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
           libbullet-dev       # Bullet: only clothbench's peers mode uses it (the build skips it when missing)
-          clang-14 libclang-rt-14-dev) # clang and libFuzzer for tools/fuzz.sh
+          clang-14 libclang-rt-14-dev  # clang and libFuzzer for tools/fuzz.sh
+          python3)            # tools/mutate.sh (its --check is a test) and the gesture scripts
 if [[ "${1:-}" != "--no-app" ]]; then
   packages+=(libglfw3-dev libglew-dev libimgui-dev libstb-dev libsdl2-dev xvfb xauth) # SDL2: the app's live sound
 fi

@@ -11,6 +11,7 @@
 #   tools/mutate.sh                    every mutation (about 30-40 min on 2 busy cores)
 #   tools/mutate.sh wind-sign ball-push   only these
 #   tools/mutate.sh --check            only check that every snippet occurs exactly once in src/
+#                                      (of the checkout itself, nothing copied or built; a ctest)
 # Options: --list FILE (default tools/mutations.txt), --dir DIR (work directory, default
 # ${TMPDIR:-/tmp}/clothtear-mutate-<checksum of the checkout's path>), --full (run the whole suite for every mutation, not only for
 # those the behaviour tests miss), --no-baseline (skip the unmutated run).
@@ -199,6 +200,14 @@ if __name__ == "__main__":
 PY
 py() { python3 "$helper" "$@"; }
 
+# ---- the check alone reads the checkout's own sources (a ctest runs it: tests/CMakeLists.txt)
+if [ "$checkOnly" = 1 ]; then
+    idText="$(py check "$list" "$root/src" "${only[@]}")" || exit 1
+    mapfile -t ids <<<"$idText"
+    echo "mutate.sh: ${#ids[@]} mutations, every snippet found exactly once in src/"
+    exit 0
+fi
+
 # ---- the copy of the tree
 echo "mutate.sh: syncing $root to $tree (no .git, no build directories)"
 py sync "$root" "$tree"
@@ -208,7 +217,6 @@ cp -a "$tree/src" "$work/pristine"
 idText="$(py check "$list" "$tree/src" "${only[@]}")" || exit 1
 mapfile -t ids <<<"$idText"
 echo "mutate.sh: ${#ids[@]} mutations, every snippet found exactly once in src/"
-[ "$checkOnly" = 1 ] && exit 0
 
 # ---- build and test helpers
 cmake -S "$tree" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCLOTHTEAR_BUILD_APP=OFF \
