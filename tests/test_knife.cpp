@@ -142,7 +142,8 @@ TEST(Knife, StraightCutAcrossMakesTwoPiecesSplitAsTheLine) {
 }
 
 // A cut that ends inside: still one piece, a slit whose two walls are as long as the stroke (new
-// boundary = 2 x its length, within a spacing), its ends weak points (tear tips).
+// boundary = 2 x its length, within a spacing), its ends weak points (tear tips); the stroke of two
+// segments cut in one call as cut segment by segment.
 TEST(Knife, CutEndingInsideLeavesOnePieceAndASlitOfTheStrokesLength) {
     for (const char* mesh : kMeshes) {
         World w = sheet(mesh);
@@ -153,6 +154,15 @@ TEST(Knife, CutEndingInsideLeavesOnePieceAndASlitOfTheStrokesLength) {
         EXPECT_GT(r.springsCut, 0u);
         EXPECT_EQ(findPieces(w.cloth).size(), 1u) << mesh;
         EXPECT_NEAR(boundaryLength(w.cloth) - border0, 2.0 * length, kSpacing) << mesh;
+        // The whole polyline in one call cuts the same as its segments one by one (cutChecked): a
+        // drawn stroke of several segments is cut along all of them.
+        World whole = sheet(mesh);
+        const CutResult all = whole.cut(stroke);
+        EXPECT_TRUE(all.ok()) << mesh << ": " << all.error;
+        EXPECT_EQ(all.springsCut, r.springsCut) << mesh;
+        EXPECT_EQ(whole.cloth.particleCount(), w.cloth.particleCount()) << mesh;
+        EXPECT_EQ(whole.cloth.rest, w.cloth.rest) << mesh;
+        EXPECT_NEAR(boundaryLength(whole.cloth), boundaryLength(w.cloth), 1e-12) << mesh;
         for (const Vec2d& end : {stroke.front(), stroke.back()}) {
             bool tip = false;
             for (Index p = 0; p < w.cloth.particleCount(); ++p)
