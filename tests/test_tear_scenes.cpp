@@ -210,10 +210,11 @@ TEST(TearScenes, PullRipIsTheSameAtTwoResolutions) {
 // at 40 tore 1 s later, at 13 deg, the 3 m one at 13 deg too (bench/README.md, "The hand's passes by
 // depth"). The rip's length on the 6 m sheet: the next test. On one thread, so that every machine
 // checks the same runs: the rips move with the round-off of the thread count, and on three or four
-// threads the 3 m sheet's axes at 40 and 80 are 11-14 deg apart and a 2 m^2 part comes off at 40 only. The first tears: the 6 m sheet
-// at 40 a side tears at 2.92-2.94 s, later than at 80 (its 10 sub-steps, `time.substeps`' floor; at
-// the guard's 7 it tears at 2.46-2.53 s: bench/README.md, "The sideways rip again"), and at 80 at
-// 2.46-2.57 s with round-off (gravity 1e-6 stronger: 2.46, 16 % before 40's): within 20 %.
+// threads the 3 m sheet's axes at 40 and 80 are 11-14 deg apart and a 2 m^2 part comes off at 40
+// only. The first tears: the 6 m sheet at 40 a side tears at 2.92-2.94 s, later than at 80 (its 10
+// sub-steps, `time.substeps`' floor; at the guard's 7 it tears at 2.46-2.53 s: bench/README.md, "The
+// sideways rip again"), and at 80 at 2.46-2.57 s with round-off (gravity 1e-6 stronger: 2.46, 16 %
+// before 40's): within 20 %.
 TEST(TearScenes, PulledSidewaysTheRipLeansTheSameWayAtTwoResolutions) {
     for (const char* sheet : {"", " --set cloth.width=3 --set cloth.height=3", " --set cloth.mesh=irregular"}) {
         Rip rips[2];

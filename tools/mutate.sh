@@ -200,11 +200,17 @@ if __name__ == "__main__":
 PY
 py() { python3 "$helper" "$@"; }
 
-# ---- the check alone reads the checkout's own sources (a ctest runs it: tests/CMakeLists.txt)
-if [ "$checkOnly" = 1 ]; then
-    idText="$(py check "$list" "$root/src" "${only[@]}")" || exit 1
+# checkList SRC: every selected snippet occurs once in SRC; their ids into `ids`.
+checkList() {
+    local idText
+    idText="$(py check "$list" "$1" "${only[@]}")" || exit 1
     mapfile -t ids <<<"$idText"
     echo "mutate.sh: ${#ids[@]} mutations, every snippet found exactly once in src/"
+}
+
+# ---- the check alone reads the checkout's own sources (a ctest runs it: tests/CMakeLists.txt)
+if [ "$checkOnly" = 1 ]; then
+    checkList "$root/src"
     exit 0
 fi
 
@@ -213,27 +219,20 @@ echo "mutate.sh: syncing $root to $tree (no .git, no build directories)"
 py sync "$root" "$tree"
 rm -rf "$work/pristine"
 cp -a "$tree/src" "$work/pristine"
-
-idText="$(py check "$list" "$tree/src" "${only[@]}")" || exit 1
-mapfile -t ids <<<"$idText"
-echo "mutate.sh: ${#ids[@]} mutations, every snippet found exactly once in src/"
+checkList "$tree/src"
 
 # ---- build and test helpers
 cmake -S "$tree" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCLOTHTEAR_BUILD_APP=OFF \
     -DCLOTHTEAR_BUILD_BENCH=OFF >"$logs/configure.log"
 buildIt() { cmake --build "$build" -j "$jobs" --target clothtear_tests clothtear >"$1" 2>&1; }
 # runTests JUNIT LOG [ctest filter args...]: the failed test names go to stdout. Never the check of
-# the list itself (Mutations.*): a mutated tree no longer holds its own snippet, so it would fail for
-# every mutation and count each as killed.
+# the list itself (label mutation-list, tests/CMakeLists.txt): a mutated tree no longer holds its own
+# snippet, so it would fail for every mutation and count each as killed.
 runTests() {
-    local junit="$1" log="$2" exclude='^Mutations\.'
+    local junit="$1" log="$2"
     shift 2
-    if [ "${1:-}" = "-E" ]; then
-        exclude="$2|$exclude"
-        shift 2
-    fi
     rm -f "$junit"
-    ctest --test-dir "$build" -j "$jobs" --timeout "$timeout" --output-junit "$junit" -E "$exclude" "$@" \
+    ctest --test-dir "$build" -j "$jobs" --timeout "$timeout" --output-junit "$junit" -LE '^mutation-list$' "$@" \
         >"$log" 2>&1 || true
     [ -f "$junit" ] || { echo "mutate.sh: ctest wrote no results, see $log" >&2; exit 1; }
     py failed "$junit"
