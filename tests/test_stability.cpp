@@ -385,6 +385,57 @@ TEST(Stability, GuardReportsWhatItSoftens) {
     EXPECT_LT(capped.guardDampingKept, 1.f);
 }
 
+// The figures the guard reports, against Gershgorin's bound worked by hand. Two oscillators
+// (test::buildOscillator's triangle, and the same twice as large far beside it: the same spring
+// weight, area / L^2 = 1/2, and four times the mass at its free corner), no gravity or air, one
+// sub-step of dt = 1 ms. A free corner's load is w dt^2 sum(k) / 2 + w dt sum(kd), with w = 3 /
+// (density x area), sum(k) = S and sum(kd) = D over its two springs: at S = 8e5 N/m and D = 10 N s/m,
+// 6.0 + 0.15 at the small one's and a quarter of that at the large one's. The guard scales each
+// corner's two springs by budget / load (0.9 / 6.15 and 0.9 / 1.5375), the springs between the
+// pinned corners not at all, and reports the most softened spring's share of its stiffness and of
+// its damping (both the small oscillator's) and the four springs it scaled.
+TEST(Stability, GuardReportsTheMostSoftenedSpringsShareOfTheMaterial) {
+    World w;
+    w.settings = test::quietSettings();
+    Settings& s = w.settings;
+    s.material.stretchStiffness = 8e5f;
+    s.material.stretchDamping = 10.f;
+    s.material.bendStiffness = 0.f;
+    s.material.density = 0.2f; // kg/m^2: the small free corner's third of its unit area is 1/15 kg
+    s.time.frameDt = 1e-3f;
+    s.time.substeps = 1;
+    s.time.maxSubsteps = 1;
+    s.time.damping = DampingMode::Explicit; // taken implicitly, the damping would not count
+    s.sleep.enabled = false;
+    MeshData m;
+    m.positions = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {8, 0, 0}, {12, 0, 0}, {10, 2, 0}};
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    m.cornerUVs = {{Vec2d(0, 0), Vec2d(1, 0), Vec2d(0.5, 1)}, {Vec2d(0, 0), Vec2d(1, 0), Vec2d(0.5, 1)}};
+    ASSERT_EQ(w.rebuild(m), "");
+    for (const int p : {0, 1, 3, 4}) w.cloth.setPinned(p, true);
+    w.step();
+    const double dt = 1e-3, wSmall = 3.0 / (0.2 * 1.0);
+    const double loadSmall = wSmall * dt * dt * 8e5 / 2 + wSmall * dt * 10.0;
+    ASSERT_NEAR(loadSmall, 6.15, 1e-9);
+    EXPECT_NEAR(w.guardStiffnessKept, 0.9 / loadSmall, 1e-5);
+    EXPECT_NEAR(w.guardDampingKept, 0.9 / loadSmall, 1e-5);
+    EXPECT_EQ(w.guardCappedSprings, 4u);
+    // The large oscillator alone: its own share (0.9 / 1.5375), not the small one's.
+    World large;
+    large.settings = s;
+    MeshData one;
+    one.positions = {{8, 0, 0}, {12, 0, 0}, {10, 2, 0}};
+    one.triangles = {{0, 1, 2}};
+    one.cornerUVs = m.cornerUVs;
+    one.cornerUVs.pop_back();
+    ASSERT_EQ(large.rebuild(one), "");
+    large.cloth.setPinned(0, true);
+    large.cloth.setPinned(1, true);
+    large.step();
+    EXPECT_NEAR(large.guardStiffnessKept, 0.9 / (loadSmall / 4), 1e-5);
+    EXPECT_EQ(large.guardCappedSprings, 2u);
+}
+
 // ========================================================================================== [DAMPING]
 
 namespace {
