@@ -235,7 +235,7 @@ struct StepState {
     std::vector<TearCandidate> tearCandidates;  // springs over their tear threshold, from the scan
     std::vector<BallContact> contacts;          // from the collide phase, for the contact phase
     std::vector<int32_t> contactOf;             // per triangle: its entry in contacts, -1
-    // The fabric a ball stretches beyond its contacts this sub-step (limit.cpp, markStretchBand),
+    // The fabric a ball stretches beyond its contacts this sub-step (limit_ball.cpp, markStretchBand),
     // per particle its rest distance from them (infinite outside the band, between sub-steps), and
     // the search's queue.
     std::vector<Index> stretchBand;
