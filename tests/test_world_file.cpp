@@ -418,6 +418,13 @@ TEST(WorldFileErrors, TopologyThatDoesNotHoldTogether) {
     poke<uint8_t>(bytes, part + 8 + 56, 0x80); // particle 0's flags
     EXPECT_EQ(refusal(bytes), "bad.ctw: byte " + std::to_string(part + 64) + " (particles): particle 0: unknown flag bits 128");
     bytes = good;
+    // Under a ball: a mark of one sub-step, never saved; left in, the limit would read a contact
+    // that is not there (fuzz/regressions/world/touched-flag-outside-a-step.ctw).
+    poke<uint8_t>(bytes, part + 8 + 56, kTouched);
+    EXPECT_EQ(refusal(bytes), "bad.ctw: byte " + std::to_string(part + 64) +
+                                  " (particles): particle 0: flag bit 8 (under a ball) is set; it lives within one "
+                                  "sub-step and a saved world never holds it");
+    bytes = good;
     poke<uint8_t>(bytes, part + 8 + 56, kWeak); // a weak point where the fans say none
     EXPECT_EQ(refusal(bytes), "bad.ctw: the cloth fails validation: particle 0: weak/hinge flag does not match its fans");
 }

@@ -182,7 +182,10 @@ void readParticles(ByteReader& r, Cloth& c) {
     const size_t n = r.count(r.u64(), kParticleBytes, "particle");
     c.x.resize(n), c.v.resize(n), c.invMass.assign(n, 0.f), c.areaShare.resize(n), c.rest.resize(n);
     c.flags.resize(n), c.particleTris.resize(n);
-    constexpr uint8_t kKnownFlags = kPinned | kWeak | kHinge | kTouched | kHem | kAsleep;
+    // kTouched lives within one sub-step (the collide phase sets it, the contact phase clears it),
+    // so a world between steps, the only one ever saved, never holds it; the limit's listing reads
+    // it from a table built from the sub-step's contacts, and a stale mark would disagree with it.
+    constexpr uint8_t kKnownFlags = kPinned | kWeak | kHinge | kHem | kAsleep;
     for (size_t p = 0; p < n; ++p) {
         const std::string at = "particle " + std::to_string(p) + ": ";
         c.x[p] = boundedVec<Vec3>(r, kMaxCoordinate, at + "position");
@@ -191,6 +194,9 @@ void readParticles(ByteReader& r, Cloth& c) {
         requireNumber(r, c.areaShare[p], 0.0, 1e300, at + "area share");
         c.rest[p] = boundedVec<Vec3d>(r, kMaxCoordinate, at + "rest position");
         c.flags[p] = r.u8();
+        if (c.flags[p] & kTouched)
+            r.fail(at + "flag bit " + std::to_string(kTouched) +
+                   " (under a ball) is set; it lives within one sub-step and a saved world never holds it");
         if (c.flags[p] & ~kKnownFlags) r.fail(at + "unknown flag bits " + std::to_string(c.flags[p] & ~kKnownFlags));
         c.particleTris[p].resize(r.count(r.u32(), 4, (at + "triangle").c_str()));
         for (Index& t : c.particleTris[p]) t = r.u32();
